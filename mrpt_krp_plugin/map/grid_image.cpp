@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/map/grid_image.h"
+
+#include <cmath>
+
+namespace krp {
+
+cv::Point worldToPixel(const mrpt::maps::COccupancyGridMap2D& grid, const mrpt::math::TPoint2D& p) {
+  const int cx = static_cast<int>(std::floor((p.x - grid.getXMin()) / grid.getResolution()));
+  const int cy = static_cast<int>(std::floor((p.y - grid.getYMin()) / grid.getResolution()));
+  return {cx, static_cast<int>(grid.getSizeY()) - 1 - cy};
+}
+
+mrpt::math::TPoint2D pixelToWorld(const mrpt::maps::COccupancyGridMap2D& grid, const cv::Point2d& px) {
+  const double r = grid.getResolution();
+  const double cy = static_cast<double>(grid.getSizeY()) - 1.0 - px.y;
+  return {grid.getXMin() + (px.x + 0.5) * r, grid.getYMin() + (cy + 0.5) * r};
+}
+
+namespace {
+template <typename CellToByte>
+cv::Mat renderGrid(const mrpt::maps::COccupancyGridMap2D& grid, CellToByte f) {
+  const int w = static_cast<int>(grid.getSizeX()), h = static_cast<int>(grid.getSizeY());
+  cv::Mat img(h, w, CV_8UC1);
+  for (int cy = 0; cy < h; ++cy) {
+    auto* row = img.ptr<uint8_t>(h - 1 - cy);
+    for (int cx = 0; cx < w; ++cx) row[cx] = f(1.0 - grid.getCell(cx, cy));
+  }
+  return img;
+}
+}  // namespace
+
+cv::Mat gridToGrey(const mrpt::maps::COccupancyGridMap2D& grid) {
+  return renderGrid(grid, [](double occ) { return static_cast<uint8_t>(std::lround(255.0 * (1.0 - occ))); });
+}
+
+cv::Mat freeMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p) {
+  return renderGrid(grid, [&](double occ) { return static_cast<uint8_t>(occ < p.max_free_occupancy ? 255 : 0); });
+}
+
+cv::Mat occupiedMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p) {
+  return renderGrid(grid, [&](double occ) { return static_cast<uint8_t>(occ > p.min_occupied_occupancy ? 255 : 0); });
+}
+
+}  // namespace krp

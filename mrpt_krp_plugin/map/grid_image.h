@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/math/TPoint2D.h>
+#include <opencv2/core.hpp>
+
+#include "mrpt_krp_plugin/map/occupancy_map.h"
+
+namespace krp {
+
+// The one place where the grid frame (x right, y up, metres) meets image coordinates
+// (column right, row 0 at the top, pixels). Every image the project writes or reads of a
+// map goes through these functions.
+
+/// Pixel (column, row) whose cell contains the metric point; may be outside the image.
+cv::Point worldToPixel(const mrpt::maps::COccupancyGridMap2D& grid, const mrpt::math::TPoint2D& p);
+
+/// Metric centre of the cell drawn at pixel (column, row).
+mrpt::math::TPoint2D pixelToWorld(const mrpt::maps::COccupancyGridMap2D& grid, const cv::Point2d& px);
+
+/// p(occupied) as 8-bit grey, 0 = occupied (black), 255 = free (white), row 0 at the top.
+cv::Mat gridToGrey(const mrpt::maps::COccupancyGridMap2D& grid);
+
+/// 255 where the cell is free, 0 elsewhere (row 0 at the top).
+cv::Mat freeMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p = {});
+
+/// 255 where the cell is occupied, 0 elsewhere (row 0 at the top).
+cv::Mat occupiedMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p = {});
+
+}  // namespace krp
