@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/sim/world.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "mrpt_krp_plugin/common/atomic_file.h"
+#include "mrpt_krp_plugin/common/input_error.h"
+
+namespace fs = std::filesystem;
+
+namespace krp {
+namespace {
+
+void rejectUnknown(const YAML::Node& n, const std::set<std::string>& known, const std::string& file,
+                   const std::string& where) {
+  for (const auto& kv : n) {
+    const auto key = kv.first.as<std::string>();
+    if (!known.count(key)) throw InputError(file, "unknown key '" + where + key + "'");
+  }
+}
+
+double number(const YAML::Node& n, const std::string& key, const std::string& file, double lo, double hi) {
+  double v;
+  try {
+    v = n[key].as<double>();
+  } catch (const YAML::Exception&) {
+    throw InputError(file, "key '" + key + "' is not a number");
+  }
+  if (!(v >= lo && v <= hi))
+    throw InputError(file, "key '" + key + "' = " + std::to_string(v) + " is outside [" + std::to_string(lo) + ", " +
+                               std::to_string(hi) + "]");
+  return v;
+}
+
+}  // namespace
+
+LidarProfile World::lidar(const std::string& profile_name) const {
+  if (std::find(lidar_profiles.begin(), lidar_profiles.end(), profile_name) == lidar_profiles.end())
+    throw InputError("world '" + name + "'", "lidar profile '" + profile_name + "' is not listed for this world");
+  LidarProfile p = lidarProfileByName(profile_name);
+  if (range_noise_std_m >= 0) p.range_noise_std_m = range_noise_std_m;
+  if (dropout_probability >= 0) p.dropout_probability = dropout_probability;
+  return p;
+}
+
+World readWorld(const std::string& path) {
+  if (!fs::exists(path)) throw InputError(path, "file does not exist");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, std::string("malformed YAML: ") + e.what());
+  }
+  if (!root.IsMap()) throw InputError(path, "expected a YAML mapping");
+  rejectUnknown(root, {"name", "map", "zones", "lidar_profiles", "default_lidar_profile", "lidar_overrides", "clutter"},
+                path, "");
+  for (const char* req : {"name", "map", "zones", "lidar_profiles"})
+    if (!root[req]) throw InputError(path, std::string("missing required key '") + req + "'");
+  const fs::path dir = fs::path(path).parent_path();
+  World w;
+  try {
+    w.name = root["name"].as<std::string>();
+    w.map_path = (dir / root["map"].as<std::string>()).string();
+    w.zones_path = (dir / root["zones"].as<std::string>()).string();
+    w.lidar_profiles = root["lidar_profiles"].as<std::vector<std::string>>();
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, std::string("bad value: ") + e.what());
+  }
+  if (w.lidar_profiles.empty()) throw InputError(path, "'lidar_profiles' is empty");
+  for (const auto& p : w.lidar_profiles) lidarProfileByName(p);  // throws for an unknown name
+  w.default_lidar_profile = root["default_lidar_profile"] ? root["default_lidar_profile"].as<std::string>()
+                                                          : w.lidar_profiles.front();
+  if (std::find(w.lidar_profiles.begin(), w.lidar_profiles.end(), w.default_lidar_profile) == w.lidar_profiles.end())
+    throw InputError(path, "default_lidar_profile '" + w.default_lidar_profile + "' is not in lidar_profiles");
+  if (const auto o = root["lidar_overrides"]) {
+    rejectUnknown(o, {"range_noise_std_m", "dropout_probability"}, path, "lidar_overrides.");
+    if (o["range_noise_std_m"]) w.range_noise_std_m = number(o, "range_noise_std_m", path, 0.0, 1.0);
+    if (o["dropout_probability"]) w.dropout_probability = number(o, "dropout_probability", path, 0.0, 1.0);
+  }
+  if (const auto c = root["clutter"]) {
+    rejectUnknown(c, {"boxes_per_100m2", "box_min_side_m", "box_max_side_m", "pallets_per_100m2", "people_per_100m2",
+                      "placement_clearance_m"},
+                  path, "clutter.");
+    auto& k = w.clutter;
+    if (c["boxes_per_100m2"]) k.boxes_per_100m2 = number(c, "boxes_per_100m2", path, 0.0, 100.0);
+    if (c["box_min_side_m"]) k.box_min_side_m = number(c, "box_min_side_m", path, 0.01, 10.0);
+    if (c["box_max_side_m"]) k.box_max_side_m = number(c, "box_max_side_m", path, 0.01, 10.0);
+    if (c["pallets_per_100m2"]) k.pallets_per_100m2 = number(c, "pallets_per_100m2", path, 0.0, 100.0);
+    if (c["people_per_100m2"]) k.people_per_100m2 = number(c, "people_per_100m2", path, 0.0, 100.0);
+    if (c["placement_clearance_m"]) k.placement_clearance_m = number(c, "placement_clearance_m", path, 0.0, 10.0);
+    if (k.box_min_side_m > k.box_max_side_m) throw InputError(path, "clutter.box_min_side_m > clutter.box_max_side_m");
+  }
+  return w;
+}
+
+void writeWorld(const World& w, const std::string& path) {
+  const fs::path dir = fs::path(path).parent_path();
+  std::ostringstream o;
+  o << "# Simulated world for mrpt_krp_plugin (written by krp-make-worlds; see sim_worlds/README.md)\n"
+    << "name: " << w.name << "\nmap: " << fs::relative(w.map_path, dir).string()
+    << "\nzones: " << fs::relative(w.zones_path, dir).string() << "\nlidar_profiles: [";
+  for (size_t i = 0; i < w.lidar_profiles.size(); ++i) o << (i ? ", " : "") << w.lidar_profiles[i];
+  o << "]\ndefault_lidar_profile: " << w.default_lidar_profile << "\n";
+  if (w.range_noise_std_m >= 0 || w.dropout_probability >= 0) {
+    o << "lidar_overrides:\n";
+    if (w.range_noise_std_m >= 0) o << "  range_noise_std_m: " << w.range_noise_std_m << "\n";
+    if (w.dropout_probability >= 0) o << "  dropout_probability: " << w.dropout_probability << "\n";
+  }
+  const auto& c = w.clutter;
+  o << "clutter:\n  boxes_per_100m2: " << c.boxes_per_100m2 << "\n  box_min_side_m: " << c.box_min_side_m
+    << "\n  box_max_side_m: " << c.box_max_side_m << "\n  pallets_per_100m2: " << c.pallets_per_100m2
+    << "\n  people_per_100m2: " << c.people_per_100m2 << "\n  placement_clearance_m: " << c.placement_clearance_m
+    << "\n";
+  writeFileAtomically(path, o.str());
+}
+
+}  // namespace krp

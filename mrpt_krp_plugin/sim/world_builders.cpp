@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/sim/world_builders.h"
+
+#include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/sim/floor_plan.h"
+#include "mrpt_krp_plugin/zones/auto_zoning.h"
+
+namespace krp {
+namespace {
+constexpr double kDoorWidthM = 0.9;
+constexpr double kMargin = 1.0;  ///< unknown border around each building [m]
+
+// Rooms between y0 and y1 along x in [x_start, x_end), walls between them, one door each
+// onto the corridor wall at y = door_wall_y.
+void roomRow(FloorPlan& plan, Rng& rng, double x_start, double x_end, double y0, double y1, double door_wall_y,
+             double min_w, double max_w, bool furnish) {
+  plan.wall(x_start, door_wall_y, x_end, door_wall_y);
+  double x = x_start;
+  while (x < x_end - 0.5) {
+    double w = rng.uniform(min_w, max_w);
+    if (x_end - (x + w) < min_w) w = x_end - x;
+    const double door = rng.uniform(x + 0.6, x + w - 0.6 - kDoorWidthM);
+    plan.free(door, door_wall_y - 0.2, door + kDoorWidthM, door_wall_y + 0.2);
+    if (x + w < x_end - 0.01) plan.wall(x + w, y0, x + w, y1);
+    if (furnish && rng.bernoulli(0.7)) {
+      // A desk or cabinet against the far wall: mapped furniture that makes rooms differ.
+      const double fw = rng.uniform(0.8, std::min(2.0, w - 1.5)), fd = rng.uniform(0.5, 0.9);
+      const double fx = rng.uniform(x + 0.4, x + w - 0.4 - fw);
+      const bool far_is_high = y1 > door_wall_y + 0.1;
+      const double far = far_is_high ? y1 : y0;
+      if (far_is_high) plan.solid(fx, far - fd - 0.1, fx + fw, far - 0.1);
+      else plan.solid(fx, far + 0.1, fx + fw, far + fd + 0.1);
+    }
+    x += w;
+  }
+}
+}  // namespace
+
+Zone rectangleZone(const std::string& name, double x0, double y0, double x1, double y1, double res) {
+  const double hx = x1 - res / 2, hy = y1 - res / 2;
+  return Zone{name, {{x0, y0}, {hx, y0}, {hx, hy}, {x0, hy}}};
+}
+
+BuiltWorld buildOfficeTwoZone(uint64_t seed) {
+  Rng rng(seed);
+  const double w = 34.0, h = 22.0;
+  FloorPlan plan(w + 2 * kMargin, h + 2 * kMargin, kWorldResolutionM);
+  const double x0 = kMargin, y0 = kMargin, x1 = kMargin + w, y1 = kMargin + h;
+  plan.building(x0, y0, x1, y1);
+  const double corridor_lo = y0 + 9.5, corridor_hi = y0 + 12.0;
+  roomRow(plan, rng, x0, x1, corridor_hi, y1, corridor_hi, 4.0, 7.5, true);
+  roomRow(plan, rng, x0, x1, y0, corridor_lo, corridor_lo, 4.0, 7.5, true);
+  // An open lounge in the right wing: one wider gap in the lower corridor wall.
+  plan.free(x0 + 24.0, corridor_lo - 0.2, x0 + 27.0, corridor_lo + 0.2);
+  BuiltWorld out{"office_two_zone", plan.toGrid(), {}};
+  const double split = x0 + w / 2;
+  out.zones.push_back(rectangleZone("west_wing", 0.0, 0.0, split, h + 2 * kMargin, kWorldResolutionM));
+  out.zones.push_back(rectangleZone("east_wing", split, 0.0, w + 2 * kMargin, h + 2 * kMargin, kWorldResolutionM));
+  return out;
+}
+
+BuiltWorld buildWarehouse(uint64_t seed) {
+  Rng rng(seed);
+  const double w = 64.0, h = 44.0;
+  FloorPlan plan(w + 2 * kMargin, h + 2 * kMargin, kWorldResolutionM);
+  const double x0 = kMargin, y0 = kMargin;
+  plan.building(x0, y0, x0 + w, y0 + h);
+  // Two blocks of identical racks: 1.1 m deep, 3.0 m aisles, a 6 m cross aisle between.
+  constexpr double kRackDepth = 1.1, kAislePitch = 4.1, kRackLength = 24.0;
+  for (double bx : {x0 + 4.0, x0 + 36.0})
+    for (int row = 0; row < 9; ++row) {
+      const double ry = y0 + 4.0 + row * kAislePitch;
+      plan.solid(bx, ry, bx + kRackLength, ry + kRackDepth);
+    }
+  // Building columns on a regular 8 m grid in the open areas (repetitive, as in real halls).
+  for (double cx = x0 + 2.0; cx < x0 + w; cx += 8.0) {
+    plan.solid(cx - 0.2, y0 + 1.8, cx + 0.2, y0 + 2.2);
+    plan.solid(cx - 0.2, y0 + h - 2.2, cx + 0.2, y0 + h - 1.8);
+  }
+  // A loading dock niche and an office box at one end: the only asymmetric features.
+  plan.free(x0 + w - 0.2, y0 + 10.0, x0 + w + 0.8, y0 + 14.0);
+  plan.wall(x0 + w + 0.8, y0 + 10.0, x0 + w + 0.8, y0 + 14.0);
+  plan.solid(x0 + 0.1, y0 + h - 5.0, x0 + 2.5 + rng.uniform(0.0, 0.5), y0 + h - 0.1);
+  BuiltWorld out{"warehouse", plan.toGrid(), {}};
+  const double W = w + 2 * kMargin, H = h + 2 * kMargin;
+  int k = 0;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 4; ++i)
+      out.zones.push_back(rectangleZone("bay_" + std::to_string(k++), i * W / 4, j * H / 2, (i + 1) * W / 4,
+                                        (j + 1) * H / 2, kWorldResolutionM));
+  return out;
+}
+
+BuiltWorld buildLargeFloor(uint64_t seed) {
+  Rng rng(seed);
+  const double w = 90.0, h = 60.0;
+  FloorPlan plan(w + 2 * kMargin, h + 2 * kMargin, kWorldResolutionM);
+  const double x0 = kMargin, y0 = kMargin;
+  plan.building(x0, y0, x0 + w, y0 + h);
+  // Two east-west corridors and a north-south spine; rooms fill the bands between.
+  const double c1 = y0 + 18.0, c2 = y0 + 39.5, cw = 2.5, spine = x0 + 44.0;
+  for (double half : {0.0, 1.0}) {
+    const double xs = half == 0.0 ? x0 : spine + cw, xe = half == 0.0 ? spine : x0 + w;
+    roomRow(plan, rng, xs, xe, y0, c1, c1, 5.0, 10.0, true);
+    roomRow(plan, rng, xs, xe, c1 + cw, c1 + cw + 9.5, c1 + cw, 5.0, 10.0, true);
+    plan.wall(xs, c1 + cw + 9.5, xe, c1 + cw + 9.5);
+    roomRow(plan, rng, xs, xe, c1 + cw + 9.5, c2, c2, 5.0, 10.0, true);
+    roomRow(plan, rng, xs, xe, c2 + cw, y0 + h, c2 + cw, 5.0, 10.0, true);
+  }
+  plan.free(spine, y0 + 0.1, spine + cw, y0 + h - 0.1);
+  BuiltWorld out{"large_floor", plan.toGrid(), {}};
+  AutoZoningParams zp;
+  zp.target_area_m2 = 250.0;
+  zp.seed = seed;
+  out.zones = autoZone(out.map, zp);
+  return out;
+}
+
+const std::vector<std::string>& worldNames() {
+  static const std::vector<std::string> names = {"office_two_zone", "warehouse", "large_floor"};
+  return names;
+}
+
+BuiltWorld buildWorld(const std::string& name, uint64_t seed) {
+  if (name == "office_two_zone") return buildOfficeTwoZone(seed);
+  if (name == "warehouse") return buildWarehouse(seed);
+  if (name == "large_floor") return buildLargeFloor(seed);
+  throw InputError("world '" + name + "'", "unknown (known: office_two_zone, warehouse, large_floor)");
+}
+
+}  // namespace krp

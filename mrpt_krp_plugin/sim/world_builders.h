@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mrpt_krp_plugin/zones/zone.h"
+
+namespace krp {
+
+/// A generated world before it is written: its map and zones.
+struct BuiltWorld {
+  std::string name;
+  mrpt::maps::COccupancyGridMap2D map;
+  std::vector<Zone> zones;
+};
+
+constexpr double kWorldResolutionM = 0.05;  ///< cell size of every generated world [m]
+
+/// Rooms off a corridor, two zones (left and right wing), in the spirit of the thesis's
+/// Willow Garage set-up. Room widths, doors and furniture vary with `seed`.
+BuiltWorld buildOfficeTwoZone(uint64_t seed);
+
+/// A hall with two blocks of identical rack rows and aisles, 8 zones: deliberately
+/// repetitive, the case where global localization picks the wrong aisle.
+BuiltWorld buildWarehouse(uint64_t seed);
+
+/// A multi-room floor (> 3000 m^2 free) with corridors, zoned automatically (>= 12 zones).
+BuiltWorld buildLargeFloor(uint64_t seed);
+
+/// The names accepted by `buildWorld`.
+const std::vector<std::string>& worldNames();
+BuiltWorld buildWorld(const std::string& name, uint64_t seed);
+
+/// An axis-aligned zone covering [x0, x1) x [y0, y1): the high edges stop half a cell
+/// short so that neighbouring rectangles never claim the same cell.
+Zone rectangleZone(const std::string& name, double x0, double y0, double x1, double y1, double resolution_m);
+
+}  // namespace krp

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/zones/zone_drawing.h"
+
+#include <cmath>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "mrpt_krp_plugin/common/atomic_file.h"
+#include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/map/grid_image.h"
+
+namespace krp {
+
+cv::Scalar zoneColour(size_t i) {
+  // Golden-angle hue steps keep neighbouring indices far apart in colour.
+  constexpr double kGoldenAngleDeg = 137.508;
+  const double hue = std::fmod(static_cast<double>(i) * kGoldenAngleDeg, 360.0) / 2.0;  // OpenCV hue is 0..180
+  cv::Mat hsv(1, 1, CV_8UC3, cv::Scalar(hue, 200, 230)), bgr;
+  cv::cvtColor(hsv, bgr, cv::COLOR_HSV2BGR);
+  const auto v = bgr.at<cv::Vec3b>(0, 0);
+  return {static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2])};
+}
+
+cv::Mat drawZones(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector<Zone>& zones,
+                  const ZoneDrawingParams& p) {
+  cv::Mat grey = gridToGrey(grid), img;
+  cv::cvtColor(grey, img, cv::COLOR_GRAY2BGR);
+  double scale = 1.0;
+  if (img.cols < p.min_image_width_px) scale = std::ceil(static_cast<double>(p.min_image_width_px) / img.cols);
+  else if (img.cols > p.max_image_width_px) scale = static_cast<double>(p.max_image_width_px) / img.cols;
+  cv::resize(img, img, cv::Size(), scale, scale, cv::INTER_NEAREST);
+
+  cv::Mat tint = img.clone();
+  std::vector<std::vector<cv::Point>> outlines;
+  for (size_t i = 0; i < zones.size(); ++i) {
+    std::vector<cv::Point> px;
+    for (const auto& pt : zones[i].polygon) {
+      const cv::Point q = worldToPixel(grid, pt);
+      px.emplace_back(static_cast<int>((q.x + 0.5) * scale), static_cast<int>((q.y + 0.5) * scale));
+    }
+    cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{px}, zoneColour(i));
+    outlines.push_back(px);
+  }
+  cv::addWeighted(tint, p.fill_opacity, img, 1.0 - p.fill_opacity, 0.0, img);
+  const int thickness = std::max(1, static_cast<int>(std::lround(img.cols / 800.0)));
+  for (size_t i = 0; i < outlines.size(); ++i) cv::polylines(img, outlines[i], true, zoneColour(i) * 0.6, thickness);
+
+  const double font = std::max(0.4, img.cols / 2000.0);
+  for (size_t i = 0; i < zones.size(); ++i) {
+    const cv::Moments m = cv::moments(outlines[i]);
+    if (m.m00 == 0) continue;
+    char text[96];
+    std::snprintf(text, sizeof(text), "%s (%.0f m2)", zones[i].name.c_str(), polygonAreaM2(zones[i].polygon));
+    int base = 0;
+    const cv::Size ts = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, font, thickness, &base);
+    const cv::Point org(static_cast<int>(m.m10 / m.m00) - ts.width / 2, static_cast<int>(m.m01 / m.m00) + ts.height / 2);
+    cv::putText(img, text, org, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(255, 255, 255), thickness + 2);
+    cv::putText(img, text, org, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(20, 20, 20), thickness);
+  }
+  return img;
+}
+
+void writeZonesPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector<Zone>& zones,
+                   const std::string& png_path, const ZoneDrawingParams& params) {
+  const cv::Mat img = drawZones(grid, zones, params);
+  AtomicFile f(png_path);
+  if (!cv::imwrite(f.tempPath() + ".png", img)) throw InputError(png_path, "cannot write PNG");
+  std::rename((f.tempPath() + ".png").c_str(), f.tempPath().c_str());
+  f.commit();
+}
+
+}  // namespace krp

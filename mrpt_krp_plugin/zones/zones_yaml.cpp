@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/zones/zones_yaml.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "mrpt_krp_plugin/common/atomic_file.h"
+#include "mrpt_krp_plugin/common/input_error.h"
+
+namespace krp {
+
+std::vector<Zone> readZonesYaml(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path, "file does not exist");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, std::string("malformed YAML: ") + e.what());
+  }
+  if (!root.IsMap() || !root["zones"]) throw InputError(path, "expected a top-level 'zones' list");
+  for (const auto& kv : root)
+    if (kv.first.as<std::string>() != "zones") throw InputError(path, "unknown key '" + kv.first.as<std::string>() + "'");
+  const auto list = root["zones"];
+  if (!list.IsSequence()) throw InputError(path, "'zones' must be a list");
+  std::vector<Zone> zones;
+  std::set<std::string> names;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const auto z = list[i];
+    const std::string where = "zone #" + std::to_string(i);
+    if (!z.IsMap()) throw InputError(path, where + " is not a mapping");
+    for (const auto& kv : z) {
+      const auto key = kv.first.as<std::string>();
+      if (key != "name" && key != "polygon") throw InputError(path, where + ": unknown key '" + key + "'");
+    }
+    Zone zone;
+    try {
+      zone.name = z["name"].as<std::string>();
+    } catch (const YAML::Exception&) {
+      throw InputError(path, where + ": missing or invalid 'name'");
+    }
+    if (zone.name.empty()) throw InputError(path, where + ": empty name");
+    if (!names.insert(zone.name).second) throw InputError(path, "zone name '" + zone.name + "' is used twice");
+    const auto poly = z["polygon"];
+    if (!poly || !poly.IsSequence() || poly.size() < 3)
+      throw InputError(path, "zone '" + zone.name + "': 'polygon' must list at least 3 [x, y] points");
+    for (const auto& pt : poly) {
+      if (!pt.IsSequence() || pt.size() != 2) throw InputError(path, "zone '" + zone.name + "': a point is not [x, y]");
+      double x, y;
+      try {
+        x = pt[0].as<double>();
+        y = pt[1].as<double>();
+      } catch (const YAML::Exception&) {
+        throw InputError(path, "zone '" + zone.name + "': a coordinate is not a number");
+      }
+      if (!std::isfinite(x) || !std::isfinite(y)) throw InputError(path, "zone '" + zone.name + "': NaN or infinite point");
+      zone.polygon.push_back({x, y});
+    }
+    zones.push_back(std::move(zone));
+  }
+  if (zones.empty()) throw InputError(path, "the zone list is empty");
+  return zones;
+}
+
+void writeZonesYaml(const std::vector<Zone>& zones, const std::string& path) {
+  std::ostringstream o;
+  o.precision(10);
+  o << "# Zones in grid-frame metres. Written by mrpt_krp_plugin.\nzones:\n";
+  for (const auto& z : zones) {
+    o << "  - name: " << z.name << "\n    polygon: [";
+    for (size_t i = 0; i < z.polygon.size(); ++i)
+      o << (i ? ", " : "") << "[" << z.polygon[i].x << ", " << z.polygon[i].y << "]";
+    o << "]\n";
+  }
+  writeFileAtomically(path, o.str());
+}
+
+}  // namespace krp
