@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/bench/bench_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "mrpt_krp_plugin/bench/line_plot.h"
+#include "mrpt_krp_plugin/common/atomic_file.h"
+
+namespace krp {
+namespace {
+
+using Key = std::tuple<std::string, std::string, std::string>;
+
+std::string num(double v, int precision = 3) {
+  if (!std::isfinite(v)) return "-";
+  std::ostringstream o;
+  o << std::setprecision(precision) << v;
+  return o.str();
+}
+
+std::string ratio(double v, double ref) {
+  if (!std::isfinite(v) || !std::isfinite(ref) || ref <= 0) return "-";
+  return num(v / ref, 3) + "x";
+}
+
+}  // namespace
+
+std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records) {
+  std::map<Key, std::vector<const TrialRecord*>> groups;
+  std::vector<Key> order;
+  for (const auto& r : records) {
+    const Key k{r.world, r.lidar, r.method};
+    if (!groups.count(k)) order.push_back(k);
+    groups[k].push_back(&r);
+  }
+  std::vector<MethodSummary> out;
+  for (const auto& k : order) {
+    const auto& g = groups[k];
+    MethodSummary s{std::get<0>(k), std::get<1>(k), std::get<2>(k)};
+    s.trials = static_cast<int>(g.size());
+    std::vector<double> upd, dist, cpu, init, meanp, pupd, ferr, ferr_c, fphi_c;
+    int ok = 0, cbw = 0;
+    for (const auto* r : g) {
+      const auto& o = r->outcome;
+      init.push_back(static_cast<double>(o.initial_particles));
+      meanp.push_back(o.mean_particles);
+      ferr.push_back(o.final_error_xy_m);
+      cbw += o.confident_but_wrong ? 1 : 0;
+      if (!o.converged) continue;
+      ++ok;
+      upd.push_back(o.updates_to_convergence);
+      dist.push_back(o.distance_to_convergence_m);
+      cpu.push_back(o.cpu_to_convergence_s);
+      pupd.push_back(o.particle_updates_to_convergence);
+      ferr_c.push_back(o.final_error_xy_m);
+      fphi_c.push_back(o.final_error_phi_deg);
+    }
+    s.success_rate = s.trials ? static_cast<double>(ok) / s.trials : 0.0;
+    s.confident_wrong_rate = s.trials ? static_cast<double>(cbw) / s.trials : 0.0;
+    s.median_updates = median(upd);
+    s.median_distance_m = median(dist);
+    s.median_cpu_s = median(cpu);
+    s.median_initial_particles = median(init);
+    s.median_mean_particles = median(meanp);
+    s.median_particle_updates = median(pupd);
+    s.median_final_error_m = median(ferr);
+    s.median_final_error_converged_m = median(ferr_c);
+    s.median_final_error_phi_deg = median(fphi_c);
+    out.push_back(s);
+  }
+  return out;
+}
+
+std::string summaryTable(const std::vector<MethodSummary>& summaries, const std::string& reference_method) {
+  std::ostringstream o;
+  o << "| world | lidar | method | trials | success | confident-wrong | median updates | median distance m | "
+       "median CPU s | CPU vs " << reference_method << " | initial particles | vs " << reference_method
+    << " | mean particles | particle-updates | final err m (conv.) | final err deg (conv.) | final err m (all) |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& s : summaries) {
+    const MethodSummary* ref = nullptr;
+    for (const auto& r : summaries)
+      if (r.world == s.world && r.lidar == s.lidar && r.method == reference_method) ref = &r;
+    o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << s.trials << " | "
+      << num(100.0 * s.success_rate, 3) << " % | " << num(100.0 * s.confident_wrong_rate, 3) << " % | "
+      << num(s.median_updates) << " | " << num(s.median_distance_m) << " | " << num(s.median_cpu_s) << " | "
+      << (ref ? ratio(s.median_cpu_s, ref->median_cpu_s) : "-") << " | " << num(s.median_initial_particles, 6) << " | "
+      << (ref ? ratio(s.median_initial_particles, ref->median_initial_particles) : "-") << " | "
+      << num(s.median_mean_particles, 6) << " | " << num(s.median_particle_updates, 6) << " | "
+      << num(s.median_final_error_converged_m) << " | " << num(s.median_final_error_phi_deg) << " | "
+      << num(s.median_final_error_m) << " |\n";
+  }
+  return o.str();
+}
+
+void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig& cfg, const std::string& command_line,
+                      const std::string& out_dir) {
+  namespace fs = std::filesystem;
+  fs::create_directories(out_dir);
+  const auto summaries = summarize(records);
+
+  std::ostringstream trials_csv, updates_csv;
+  trials_csv << "world,lidar,method,trial,trial_seed,filter_seed,converged,updates_to_convergence,"
+                "distance_to_convergence_m,cpu_to_convergence_s,initial_particles,mean_particles,"
+                "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,total_cpu_s\n";
+  updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,particles,cpu_s,distance_m\n";
+  for (const auto& r : records) {
+    const auto& o = r.outcome;
+    trials_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << r.trial_seed << ","
+               << r.filter_seed << "," << o.converged << "," << o.updates_to_convergence << ","
+               << o.distance_to_convergence_m << "," << o.cpu_to_convergence_s << "," << o.initial_particles << ","
+               << o.mean_particles << "," << o.particle_updates_to_convergence << "," << o.final_error_xy_m << ","
+               << o.final_error_phi_deg << "," << o.confident_but_wrong << "," << o.total_cpu_s << "\n";
+    for (size_t i = 0; i < r.updates.size(); ++i) {
+      const auto& u = r.updates[i];
+      updates_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << i << "," << u.error_xy_m
+                  << "," << u.error_phi_deg << "," << u.std_xy_m << "," << u.std_phi_deg << "," << u.particles << ","
+                  << u.cpu_s << "," << u.distance_m << "\n";
+    }
+  }
+  writeFileAtomically((fs::path(out_dir) / "trials.csv").string(), trials_csv.str());
+  writeFileAtomically((fs::path(out_dir) / "updates.csv").string(), updates_csv.str());
+
+  nlohmann::json j;
+  j["command"] = command_line;
+  j["seed"] = cfg.seed;
+  j["trials_per_pair"] = cfg.trials;
+  j["criteria"] = {{"max_error_xy_m", cfg.criteria.max_error_xy_m},
+                   {"max_error_phi_deg", cfg.criteria.max_error_phi_deg},
+                   {"confident_std_xy_m", cfg.criteria.confident_std_xy_m},
+                   {"confident_std_phi_deg", cfg.criteria.confident_std_phi_deg}};
+  for (const auto& s : summaries)
+    j["summary"].push_back({{"world", s.world}, {"lidar", s.lidar}, {"method", s.method}, {"trials", s.trials},
+                            {"success_rate", s.success_rate}, {"confident_wrong_rate", s.confident_wrong_rate},
+                            {"median_updates_to_convergence", s.median_updates},
+                            {"median_distance_to_convergence_m", s.median_distance_m},
+                            {"median_cpu_to_convergence_s", s.median_cpu_s},
+                            {"median_initial_particles", s.median_initial_particles},
+                            {"median_mean_particles", s.median_mean_particles},
+                            {"median_particle_updates_to_convergence", s.median_particle_updates},
+                            {"median_final_error_m_converged", s.median_final_error_converged_m},
+                            {"median_final_error_deg_converged", s.median_final_error_phi_deg},
+                            {"median_final_error_m_all", s.median_final_error_m}});
+  // NaN medians (no converged trial) become null in JSON.
+  writeFileAtomically((fs::path(out_dir) / "summary.json").string(), j.dump(2) + "\n");
+
+  // Plots per world and lidar: fraction converged by update, median particles by update.
+  std::map<std::pair<std::string, std::string>, std::map<std::string, std::vector<const TrialRecord*>>> by_pair;
+  for (const auto& r : records) by_pair[{r.world, r.lidar}][r.method].push_back(&r);
+  std::vector<std::string> plot_files;
+  for (const auto& [pair, methods] : by_pair) {
+    std::vector<PlotSeries> conv, parts;
+    for (const auto& [method, recs] : methods) {
+      size_t n_updates = 0;
+      for (const auto* r : recs) n_updates = std::max(n_updates, r->updates.size());
+      PlotSeries c{method, {}, {}}, p{method, {}, {}};
+      for (size_t i = 0; i < n_updates; ++i) {
+        int done = 0;
+        std::vector<double> counts;
+        for (const auto* r : recs) {
+          if (r->outcome.converged && static_cast<size_t>(r->outcome.updates_to_convergence) <= i + 1) ++done;
+          if (i < r->updates.size()) counts.push_back(static_cast<double>(r->updates[i].particles));
+        }
+        c.x.push_back(static_cast<double>(i + 1));
+        c.y.push_back(static_cast<double>(done) / static_cast<double>(recs.size()));
+        p.x.push_back(static_cast<double>(i + 1));
+        p.y.push_back(median(counts));
+      }
+      conv.push_back(c);
+      parts.push_back(p);
+    }
+    const std::string stem = pair.first + "_" + pair.second;
+    writeLinePlot((fs::path(out_dir) / (stem + "_converged.png")).string(),
+                  "Converged (and stays) by update: " + pair.first + ", " + pair.second, "update", "fraction of trials", conv);
+    LinePlotParams lp;
+    lp.log_y = true;
+    writeLinePlot((fs::path(out_dir) / (stem + "_particles.png")).string(),
+                  "Particles by update (median): " + pair.first + ", " + pair.second, "update", "particles", parts, lp);
+    plot_files.push_back(stem);
+  }
+
+  std::ostringstream md;
+  md << "# krp-bench report\n\nCommand:\n\n```\n" << command_line << "\n```\n\n"
+     << "Base seed " << cfg.seed << ", " << cfg.trials << " trials per world and lidar; every method replays the same "
+     << "simulated trials with the same filter seed. A trial converges when the filter mean is within "
+     << cfg.criteria.max_error_xy_m << " m and " << cfg.criteria.max_error_phi_deg
+     << " deg of the truth at some update and every later one; \"updates\" counts filter updates up to that one "
+        "(1 = from the first scan). CPU is the thread CPU time of the localization code only (simulation excluded). "
+        "Confident-but-wrong: at the last update the filter's largest xy std is below "
+     << cfg.criteria.confident_std_xy_m << " m and its heading std below " << cfg.criteria.confident_std_phi_deg
+     << " deg, yet the mean is outside tolerance. Medians of updates, distance, CPU and particle-updates are over "
+        "converged trials. Ratios are against uniform-mcl in this same run.\n\n"
+     << summaryTable(summaries) << "\n";
+  for (const auto& stem : plot_files)
+    md << "![converged " << stem << "](" << stem << "_converged.png)\n![particles " << stem << "](" << stem
+       << "_particles.png)\n\n";
+  md << "Per-trial data: `trials.csv`; per-update data: `updates.csv`; machine-readable summary: `summary.json`.\n";
+  writeFileAtomically((fs::path(out_dir) / "REPORT.md").string(), md.str());
+}
+
+}  // namespace krp

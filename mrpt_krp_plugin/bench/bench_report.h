@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mrpt_krp_plugin/bench/bench_runner.h"
+
+namespace krp {
+
+/// Medians and rates of one method on one world and lidar.
+struct MethodSummary {
+  std::string world, lidar, method;
+  int trials = 0;
+  double success_rate = 0.0;                 ///< converged / trials
+  double confident_wrong_rate = 0.0;         ///< confident but wrong / trials
+  double median_updates = 0.0;               ///< over converged trials
+  double median_distance_m = 0.0;            ///< over converged trials
+  double median_cpu_s = 0.0;                 ///< CPU to convergence, over converged trials
+  double median_initial_particles = 0.0;
+  double median_mean_particles = 0.0;
+  double median_particle_updates = 0.0;      ///< over converged trials
+  double median_final_error_m = 0.0;         ///< over all trials
+  double median_final_error_converged_m = 0.0;  ///< over converged trials
+  double median_final_error_phi_deg = 0.0;   ///< over converged trials
+};
+
+std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records);
+
+/// The Markdown table of summaries, with ratios against `reference_method` where present.
+std::string summaryTable(const std::vector<MethodSummary>& summaries, const std::string& reference_method = "uniform-mcl");
+
+/// Writes `trials.csv`, `updates.csv`, `summary.json`, `REPORT.md` and the PNG plots into
+/// `out_dir`. Every file is written atomically.
+void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig& config, const std::string& command_line,
+                      const std::string& out_dir);
+
+}  // namespace krp

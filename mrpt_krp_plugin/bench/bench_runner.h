@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "mrpt_krp_plugin/bench/method_registry.h"
+#include "mrpt_krp_plugin/bench/trial_metrics.h"
+#include "mrpt_krp_plugin/sim/trial.h"
+
+namespace krp {
+
+struct BenchConfig {
+  std::vector<std::string> world_files;  ///< `*.world.yaml`
+  std::vector<std::string> lidars;       ///< profile names; empty = each world's default
+  std::vector<std::string> methods = {"uniform-mcl", "amcl-kld"};
+  int trials = 10;
+  uint64_t seed = 1;
+  TrialParams trial;
+  MethodSettings method_settings;
+  MclParams mcl;
+  ConvergenceCriteria criteria;
+  std::string rawlog_dir;  ///< when set, each trial is also written as a rawlog + ground truth
+};
+
+/// One method on one trial.
+struct TrialRecord {
+  std::string world, lidar, method;
+  int trial = 0;
+  uint64_t trial_seed = 0, filter_seed = 0;
+  double free_area_m2 = 0.0;
+  TrialOutcome outcome;
+  std::vector<UpdateRecord> updates;
+};
+
+/// Runs worlds x lidars x methods x trials. Each trial is simulated once and replayed for
+/// every method with the same filter seed, so methods are compared on identical input.
+std::vector<TrialRecord> runBench(const BenchConfig& config, std::ostream& log);
+
+}  // namespace krp

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/bench/method_registry.h"
+
+#include "mrpt_krp_plugin/common/input_error.h"
+
+namespace krp {
+
+std::vector<std::string> methodNames() { return {"uniform-mcl", "amcl-kld", "amcl-kld-50k"}; }
+
+std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& s) {
+  if (name == "uniform-mcl") return std::make_shared<UniformInitializer>(s.uniform);
+  if (name == "amcl-kld") return std::make_shared<AmclKldInitializer>(s.amcl, name);
+  if (name == "amcl-kld-50k") {
+    AmclKldParams p = s.amcl;
+    p.max_particles = s.amcl_high_max_particles;
+    return std::make_shared<AmclKldInitializer>(p, name);
+  }
+  std::string known;
+  for (const auto& n : methodNames()) known += (known.empty() ? "" : ", ") + n;
+  throw InputError("method '" + name + "'", "unknown (known: " + known + ")");
+}
+
+}  // namespace krp

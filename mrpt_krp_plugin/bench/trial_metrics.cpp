@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/bench/trial_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace krp {
+
+UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& truth, double distance_m) {
+  UpdateRecord r;
+  r.error_xy_m = std::hypot(e.mean.x - truth.x, e.mean.y - truth.y);
+  r.error_phi_deg = std::abs(mrpt::math::wrapToPi(e.mean.phi - truth.phi)) * 180.0 / M_PI;
+  // Largest eigenvalue of the 2x2 xy block, in closed form.
+  const double a = e.cov(0, 0), b = e.cov(0, 1), d = e.cov(1, 1);
+  const double lambda = 0.5 * (a + d) + std::sqrt(0.25 * (a - d) * (a - d) + b * b);
+  r.std_xy_m = std::sqrt(std::max(0.0, lambda));
+  r.std_phi_deg = std::sqrt(std::max(0.0, e.cov(2, 2))) * 180.0 / M_PI;
+  r.particles = e.particles;
+  r.cpu_s = e.cpu_s;
+  r.distance_m = distance_m;
+  return r;
+}
+
+TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& u, const ConvergenceCriteria& c) {
+  TrialOutcome o;
+  if (u.empty()) return o;
+  auto within = [&](const UpdateRecord& r) { return r.error_xy_m <= c.max_error_xy_m && r.error_phi_deg <= c.max_error_phi_deg; };
+  // The first update from which every later update stays within tolerance.
+  int first = -1;
+  for (int i = static_cast<int>(u.size()) - 1; i >= 0 && within(u[i]); --i) first = i;
+  o.initial_particles = u.front().particles;
+  double sum_particles = 0.0;
+  for (const auto& r : u) {
+    sum_particles += static_cast<double>(r.particles);
+    o.total_cpu_s += r.cpu_s;
+  }
+  o.mean_particles = sum_particles / static_cast<double>(u.size());
+  if (first >= 0) {
+    o.converged = true;
+    o.updates_to_convergence = first + 1;
+    o.distance_to_convergence_m = u[first].distance_m;
+    o.cpu_to_convergence_s = 0.0;
+    o.particle_updates_to_convergence = 0.0;
+    for (int i = 0; i <= first; ++i) {
+      o.cpu_to_convergence_s += u[i].cpu_s;
+      o.particle_updates_to_convergence += static_cast<double>(u[i].particles);
+    }
+  }
+  const auto& last = u.back();
+  o.final_error_xy_m = last.error_xy_m;
+  o.final_error_phi_deg = last.error_phi_deg;
+  o.confident_but_wrong = !within(last) && last.std_xy_m < c.confident_std_xy_m && last.std_phi_deg < c.confident_std_phi_deg;
+  return o;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace krp

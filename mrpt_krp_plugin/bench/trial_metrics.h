@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "mrpt_krp_plugin/filter/mcl_localizer.h"
+
+namespace krp {
+
+/// When a filter counts as localized, and when it counts as "confident".
+struct ConvergenceCriteria {
+  double max_error_xy_m = 0.5;       ///< mean within this of the truth [m]
+  double max_error_phi_deg = 10.0;   ///< and within this heading [deg]
+  double confident_std_xy_m = 0.5;   ///< filter spread below this (largest xy std) reads as confident [m]
+  double confident_std_phi_deg = 10.0;  ///< and heading std below this [deg]
+};
+
+/// One filter update against the truth.
+struct UpdateRecord {
+  double error_xy_m = 0.0;
+  double error_phi_deg = 0.0;
+  double std_xy_m = 0.0;     ///< sqrt of the largest eigenvalue of the xy covariance [m]
+  double std_phi_deg = 0.0;
+  std::size_t particles = 0;
+  double cpu_s = 0.0;
+  double distance_m = 0.0;   ///< true distance travelled up to this update [m]
+};
+
+UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& truth, double distance_m);
+
+/// What the bench reports per trial.
+struct TrialOutcome {
+  bool converged = false;            ///< within tolerance at some update and every later one
+  int updates_to_convergence = -1;   ///< 1 = localized from the first scan; -1 if never
+  double distance_to_convergence_m = -1.0;
+  double cpu_to_convergence_s = -1.0;
+  std::size_t initial_particles = 0;
+  double mean_particles = 0.0;
+  double particle_updates_to_convergence = -1.0;  ///< sum of particles over updates up to convergence
+  double final_error_xy_m = 0.0;
+  double final_error_phi_deg = 0.0;
+  bool confident_but_wrong = false;  ///< at the last update: spread small, pose outside tolerance
+  double total_cpu_s = 0.0;
+};
+
+TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& updates, const ConvergenceCriteria& criteria);
+
+/// Median of values (NaN for none).
+double median(std::vector<double> values);
+
+}  // namespace krp

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/filter/mcl_localizer.h"
+
+#include <time.h>
+
+#include <cmath>
+
+#include "mrpt_krp_plugin/common/random.h"
+
+namespace krp {
+
+double threadCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+MclLocalizer::MclLocalizer(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
+                           std::shared_ptr<ParticleInitializer> init, MclParams params)
+    // The filter needs its own copy: MRPT caches the likelihood field inside the map.
+    : map_(std::make_shared<mrpt::maps::COccupancyGridMap2D>(*map)), init_(std::move(init)), params_(params) {
+  auto& lo = map_->likelihoodOptions;
+  lo.likelihoodMethod = mrpt::maps::COccupancyGridMap2D::lmLikelihoodField_Thrun;
+  lo.LF_decimation = static_cast<uint32_t>(params_.sensor.decimation);
+  lo.LF_stdHit = static_cast<float>(params_.sensor.std_hit_m);
+  lo.LF_maxCorrsDistance = static_cast<float>(params_.sensor.max_corr_distance_m);
+  lo.LF_zHit = static_cast<float>(params_.sensor.z_hit);
+  lo.LF_zRandom = static_cast<float>(params_.sensor.z_random);
+  lo.LF_useSquareDist = false;
+  lo.enableLikelihoodCache = true;
+  pf_.options.metricMap = map_;
+  auto& o = filter_.m_options;
+  o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
+  o.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
+  o.BETA = 0.0;  // never resample inside executeOn: see the class comment
+}
+
+void MclLocalizer::resampleSystematicIfNeeded() {
+  const size_t n = pf_.m_particles.size();
+  if (n == 0) return;
+  const double ess = pf_.ESS();
+  if (ess >= params_.resample_below_ess) return;
+  double max_lw = -std::numeric_limits<double>::infinity();
+  for (const auto& p : pf_.m_particles) max_lw = std::max(max_lw, p.log_w);
+  std::vector<double> cumulative(n);
+  double total = 0.0;
+  for (size_t i = 0; i < n; ++i) cumulative[i] = (total += std::exp(pf_.m_particles[i].log_w - max_lw));
+  Rng rng(deriveSeed(params_.seed, ++resample_draws_));
+  const double step = total / static_cast<double>(n);
+  double u = rng.uniform(0.0, step);
+  auto old = pf_.m_particles;
+  size_t j = 0;
+  for (size_t i = 0; i < n; ++i, u += step) {
+    while (j + 1 < n && cumulative[j] < u) ++j;
+    pf_.m_particles[i].d = old[j].d;
+    pf_.m_particles[i].log_w = 0.0;
+  }
+}
+
+MclEstimate MclLocalizer::update(const RawlogStep& step) {
+  const double t0 = threadCpuSeconds();
+  if (!initialized_) {
+    reseedMrptGlobalRandom(params_.seed);
+    init_->initialize(pf_, filter_.m_options, *map_, *step.observations);
+    if (!filter_.m_options.adaptiveSampleSize) filter_.m_options.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
+    initialized_ = true;
+  }
+  auto action = step.action;
+  if (!action) {
+    // No odometry recorded for this step: a zero motion with the model's minimum noise.
+    action = mrpt::obs::CActionCollection::Create();
+    mrpt::obs::CActionRobotMovement2D move;
+    move.computeFromOdometry(mrpt::poses::CPose2D(0, 0, 0), OdometryModelParams{}.toMrpt());
+    action->insert(move);
+  }
+  mrpt::bayes::CParticleFilter::TParticleFilterStats stats;
+  filter_.executeOn(pf_, action.get(), step.observations.get(), &stats);
+  if (!filter_.m_options.adaptiveSampleSize) resampleSystematicIfNeeded();
+
+  MclEstimate e;
+  const auto [cov, mean] = pf_.getCovarianceAndMean();
+  e.cov = cov;
+  e.mean = mean.asTPose();
+  e.particles = pf_.size();
+  e.cpu_s = threadCpuSeconds() - t0;
+  return e;
+}
+
+}  // namespace krp

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/slam/CMonteCarloLocalization2D.h>
+
+#include <memory>
+
+#include "mrpt_krp_plugin/filter/particle_initializer.h"
+#include "mrpt_krp_plugin/sim/rawlog_io.h"
+
+namespace krp {
+
+/// The scan likelihood the filter weighs particles with (MRPT's likelihood field).
+struct SensorModelParams {
+  int decimation = 4;            ///< use every n-th beam
+  double std_hit_m = 0.20;       ///< likelihood-field sigma [m]
+  double max_corr_distance_m = 0.5;  ///< distances beyond this count as this [m]
+  double z_hit = 0.95;           ///< weight of the hit model [0..1]
+  double z_random = 0.05;        ///< weight of random returns [0..1]
+};
+
+struct MclParams {
+  SensorModelParams sensor;
+  double resample_below_ess = 0.5;  ///< systematic resampling when ESS/N drops below this [0..1]
+  uint32_t seed = 1;                ///< MRPT's global generator is reseeded with this
+};
+
+/// One filter update's outcome.
+struct MclEstimate {
+  mrpt::math::TPose2D mean;
+  mrpt::math::CMatrixDouble33 cov;
+  std::size_t particles = 0;
+  double cpu_s = 0.0;  ///< thread CPU time of this update (localization code only) [s]
+};
+
+/// MRPT's CMonteCarloLocalization2D driven step by step, with the start chosen by a
+/// ParticleInitializer.
+///
+/// MRPT 2.5.8's fixed-size resampling inside CParticleFilter::executeOn does not reset the
+/// weights afterwards, so they compound over resamplings; this class disables that path
+/// (BETA = 0) and resamples itself (systematic, weights reset) when ESS/N < threshold. The
+/// KLD path resamples inside MRPT's adaptive proposal and is left as it is.
+class MclLocalizer {
+ public:
+  MclLocalizer(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map, std::shared_ptr<ParticleInitializer> init,
+               MclParams params = {});
+
+  /// First call initializes from the step's observation, then updates with it.
+  MclEstimate update(const RawlogStep& step);
+
+  std::size_t particleCount() const { return pf_.size(); }
+  const mrpt::slam::CMonteCarloLocalization2D& particles() const { return pf_; }
+
+ private:
+  void resampleSystematicIfNeeded();
+
+  std::shared_ptr<mrpt::maps::COccupancyGridMap2D> map_;
+  std::shared_ptr<ParticleInitializer> init_;
+  MclParams params_;
+  mrpt::slam::CMonteCarloLocalization2D pf_;
+  mrpt::bayes::CParticleFilter filter_;
+  bool initialized_ = false;
+  uint64_t resample_draws_ = 0;
+};
+
+/// Thread CPU time [s].
+double threadCpuSeconds();
+
+}  // namespace krp

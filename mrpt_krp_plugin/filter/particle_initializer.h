@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/slam/CMonteCarloLocalization2D.h>
+
+#include <string>
+
+namespace krp {
+
+/// How the filter starts when the robot knows nothing of its pose. Every method the bench
+/// compares (uniform, AMCL-style KLD, and later the learned seeded prior) implements this.
+class ParticleInitializer {
+ public:
+  virtual ~ParticleInitializer() = default;
+
+  /// Short name used by the bench and the apps (`uniform-mcl`, `amcl-kld`, ...).
+  virtual std::string name() const = 0;
+
+  /// Fills `pf` with the prior and sets its sample-size options (`pf.options.KLD_params`,
+  /// `pf_options.adaptiveSampleSize`). `first` is the first observation, which a seeded
+  /// initializer uses; uniform ones ignore it.
+  virtual void initialize(mrpt::slam::CMonteCarloLocalization2D& pf, mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf_options,
+                          const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) = 0;
+};
+
+}  // namespace krp
