@@ -38,8 +38,9 @@ void roomRow(FloorPlan& plan, Rng& rng, double x_start, double x_end, double y0,
 }  // namespace
 
 Zone rectangleZone(const std::string& name, double x0, double y0, double x1, double y1, double res) {
-  const double hx = x1 - res / 2, hy = y1 - res / 2;
-  return Zone{name, {{x0, y0}, {hx, y0}, {hx, hy}, {x0, hy}}};
+  // Corners sit on cell centres, so no division lands on a cell edge where rounding decides.
+  const double lx = x0 + res / 2, ly = y0 + res / 2, hx = x1 - res / 2, hy = y1 - res / 2;
+  return Zone{name, {{lx, ly}, {hx, ly}, {hx, hy}, {lx, hy}}};
 }
 
 BuiltWorld buildOfficeTwoZone(uint64_t seed) {

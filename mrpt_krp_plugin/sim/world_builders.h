@@ -35,8 +35,8 @@ BuiltWorld buildLargeFloor(uint64_t seed);
 const std::vector<std::string>& worldNames();
 BuiltWorld buildWorld(const std::string& name, uint64_t seed);
 
-/// An axis-aligned zone covering [x0, x1) x [y0, y1): the high edges stop half a cell
-/// short so that neighbouring rectangles never claim the same cell.
+/// An axis-aligned zone covering the cells of [x0, x1) x [y0, y1): its corners sit on the
+/// centres of the first and last cells, so neighbouring rectangles never claim the same cell.
 Zone rectangleZone(const std::string& name, double x0, double y0, double x1, double y1, double resolution_m);
 
 }  // namespace krp

@@ -45,7 +45,7 @@ cv::Mat drawZones(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector
   const int thickness = std::max(1, static_cast<int>(std::lround(img.cols / 800.0)));
   for (size_t i = 0; i < outlines.size(); ++i) cv::polylines(img, outlines[i], true, zoneColour(i) * 0.6, thickness);
 
-  const double font = std::max(0.4, img.cols / 2000.0);
+  const double font = std::max(0.35, img.cols / 3600.0);
   for (size_t i = 0; i < zones.size(); ++i) {
     const cv::Moments m = cv::moments(outlines[i]);
     if (m.m00 == 0) continue;

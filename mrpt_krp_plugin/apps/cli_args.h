@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace krp::apps {
+
+/// `--key value` / `--flag` parsing with a declared set of options, so a mistyped flag is
+/// an error with the usage text rather than silently ignored.
+class CliArgs {
+ public:
+  struct Option {
+    std::string name;       ///< without dashes
+    std::string value_hint; ///< empty for a boolean flag
+    std::string help;
+    std::string default_value;
+  };
+
+  CliArgs(std::string program, std::string summary, std::vector<Option> options);
+
+  /// Parses argv; returns false (after printing usage) for --help; throws InputError on bad input.
+  bool parse(int argc, char** argv);
+
+  std::string get(const std::string& name) const;
+  bool has(const std::string& name) const;   ///< given on the command line
+  bool flag(const std::string& name) const;
+  double number(const std::string& name) const;
+  long long integer(const std::string& name) const;
+  std::vector<std::string> list(const std::string& name) const;  ///< comma-separated
+  std::string usage() const;
+  std::string commandLine() const { return command_line_; }
+
+ private:
+  const Option& option(const std::string& name) const;
+  std::string program_, summary_, command_line_;
+  std::vector<Option> options_;
+  std::map<std::string, std::string> values_;
+};
+
+/// Runs `body`, turning exceptions into a message on stderr and exit code 2 (bad input) or 1.
+int runMain(const std::string& program, int (*body)(int, char**), int argc, char** argv);
+
+}  // namespace krp::apps

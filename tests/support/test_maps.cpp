@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "support/test_maps.h"
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "mrpt_krp_plugin/sim/floor_plan.h"
+
+namespace krp::test {
+
+mrpt::maps::COccupancyGridMap2D asymmetricRoom(double w, double h, double res) {
+  FloorPlan plan(w + 1.0, h + 1.0, res);
+  plan.building(0.5, 0.5, 0.5 + w, 0.5 + h);
+  plan.wall(0.5 + 0.3 * w, 0.5, 0.5 + 0.3 * w, 0.5 + 0.4 * h);
+  plan.wall(0.5 + 0.3 * w, 0.5 + 0.4 * h, 0.5 + 0.45 * w, 0.5 + 0.4 * h);
+  plan.solid(0.5 + 0.75 * w, 0.5 + 0.7 * h, 0.5 + 0.85 * w, 0.5 + 0.9 * h);
+  return plan.toGrid();
+}
+
+std::string tempDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("krp_test_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+void writeText(const std::string& path, const std::string& content) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  std::ofstream(path, std::ios::binary) << content;
+}
+
+}  // namespace krp::test

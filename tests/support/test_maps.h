@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <string>
+
+namespace krp::test {
+
+/// A rectangular room (walls all round) with an L-shaped inner wall so that it has no
+/// symmetry: a pose in it is unique from one scan.
+mrpt::maps::COccupancyGridMap2D asymmetricRoom(double width_m = 8.0, double height_m = 6.0, double resolution_m = 0.05);
+
+/// A fresh temporary folder for one test.
+std::string tempDir(const std::string& name);
+
+/// Writes `content` to `path` (creating folders).
+void writeText(const std::string& path, const std::string& content);
+
+}  // namespace krp::test
