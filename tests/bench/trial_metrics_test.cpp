@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mrpt_krp_plugin/bench/trial_metrics.h"
+
+namespace krp {
+namespace {
+
+UpdateRecord rec(double err_m, double err_deg, double std_m, size_t particles, double cpu, double dist) {
+  UpdateRecord r;
+  r.error_xy_m = err_m;
+  r.error_phi_deg = err_deg;
+  r.std_xy_m = std_m;
+  r.std_phi_deg = 2.0;
+  r.particles = particles;
+  r.cpu_s = cpu;
+  r.distance_m = dist;
+  return r;
+}
+
+TEST(TrialMetrics, ConvergenceMustHoldAtEveryLaterUpdate) {
+  // Within tolerance at update 2, out at 3, in from 4 on: converges at update 4.
+  const std::vector<UpdateRecord> u = {rec(5, 90, 3, 1000, 1, 0), rec(0.2, 2, 0.1, 800, 1, 0.2), rec(2, 2, 0.1, 500, 1, 0.4),
+                                       rec(0.1, 1, 0.05, 300, 1, 0.6), rec(0.05, 1, 0.05, 200, 1, 0.8)};
+  const auto o = evaluateTrial(u, {});
+  EXPECT_TRUE(o.converged);
+  EXPECT_EQ(o.updates_to_convergence, 4);
+  EXPECT_NEAR(o.distance_to_convergence_m, 0.6, 1e-12);
+  EXPECT_NEAR(o.cpu_to_convergence_s, 4.0, 1e-12);
+  EXPECT_NEAR(o.particle_updates_to_convergence, 1000 + 800 + 500 + 300, 1e-9);
+  EXPECT_EQ(o.initial_particles, 1000u);
+  EXPECT_NEAR(o.mean_particles, 560.0, 1e-9);
+  EXPECT_FALSE(o.confident_but_wrong);
+}
+
+TEST(TrialMetrics, ConfidentButWrongIsSmallSpreadWithWrongPose) {
+  const auto wrong_tight = evaluateTrial({rec(5, 3, 3, 100, 1, 0), rec(12, 180, 0.1, 100, 1, 0.2)}, {});
+  EXPECT_FALSE(wrong_tight.converged);
+  EXPECT_EQ(wrong_tight.updates_to_convergence, -1);
+  EXPECT_TRUE(wrong_tight.confident_but_wrong);
+  const auto wrong_wide = evaluateTrial({rec(12, 180, 4.0, 100, 1, 0)}, {});
+  EXPECT_FALSE(wrong_wide.confident_but_wrong);
+  const auto first_scan = evaluateTrial({rec(0.1, 1, 0.1, 100, 1, 0), rec(0.1, 1, 0.1, 100, 1, 0.2)}, {});
+  EXPECT_EQ(first_scan.updates_to_convergence, 1);
+  EXPECT_NEAR(first_scan.distance_to_convergence_m, 0.0, 1e-12);
+}
+
+TEST(TrialMetrics, HeadingToleranceCounts) {
+  const auto o = evaluateTrial({rec(0.1, 25, 0.1, 100, 1, 0)}, {});
+  EXPECT_FALSE(o.converged);
+}
+
+TEST(TrialMetrics, UpdateRecordFromEstimate) {
+  MclEstimate e;
+  e.mean = {1.0, 2.0, 0.1};
+  e.cov.setZero();
+  e.cov(0, 0) = 0.04;
+  e.cov(1, 1) = 0.01;
+  e.cov(2, 2) = std::pow(5.0 * M_PI / 180.0, 2);
+  e.particles = 42;
+  const auto r = makeUpdateRecord(e, {1.3, 2.4, 0.1 + M_PI / 18}, 1.5);
+  EXPECT_NEAR(r.error_xy_m, 0.5, 1e-9);
+  EXPECT_NEAR(r.error_phi_deg, 10.0, 1e-9);
+  EXPECT_NEAR(r.std_xy_m, 0.2, 1e-9);
+  EXPECT_NEAR(r.std_phi_deg, 5.0, 1e-9);
+  EXPECT_EQ(r.particles, 42u);
+}
+
+TEST(TrialMetrics, Median) {
+  EXPECT_NEAR(median({3, 1, 2}), 2.0, 1e-12);
+  EXPECT_NEAR(median({4, 1, 2, 3}), 2.5, 1e-12);
+  EXPECT_TRUE(std::isnan(median({})));
+}
+
+}  // namespace
+}  // namespace krp

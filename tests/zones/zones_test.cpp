@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+
+#include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/sim/world_builders.h"
+#include "mrpt_krp_plugin/zones/auto_zoning.h"
+#include "mrpt_krp_plugin/zones/zone_drawing.h"
+#include "mrpt_krp_plugin/zones/zone_validation.h"
+#include "mrpt_krp_plugin/zones/zones_yaml.h"
+#include "support/test_maps.h"
+
+namespace krp {
+namespace {
+
+TEST(ZonesYaml, RoundTripsAndLooksUpPoints) {
+  const auto dir = test::tempDir("zones_rt");
+  const std::vector<Zone> zones = {{"left", {{0.6, 0.6}, {4.0, 0.6}, {4.0, 6.0}, {0.6, 6.0}}},
+                                   {"right", {{4.1, 0.6}, {8.4, 0.6}, {8.4, 6.0}, {4.1, 6.0}}}};
+  writeZonesYaml(zones, dir + "/z.yaml");
+  const auto back = readZonesYaml(dir + "/z.yaml");
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[1].name, "right");
+  EXPECT_NEAR(back[1].polygon[2].x, 8.4, 1e-9);
+  const auto room = test::asymmetricRoom();
+  const ZoneIndex index(room, back);
+  EXPECT_EQ(index.zoneAt({2.0, 3.0}), 0);
+  EXPECT_EQ(index.zoneAt({7.0, 3.0}), 1);
+  EXPECT_EQ(index.zoneAt({-5.0, 3.0}), -1);
+  EXPECT_TRUE(findZoneProblems(room, back).empty());
+}
+
+TEST(ZonesYaml, RejectsMalformedFiles) {
+  const auto dir = test::tempDir("zones_bad");
+  test::writeText(dir + "/empty.yaml", "zones: []\n");
+  test::writeText(dir + "/two_points.yaml", "zones:\n  - name: a\n    polygon: [[0, 0], [1, 1]]\n");
+  test::writeText(dir + "/dup.yaml",
+                  "zones:\n  - name: a\n    polygon: [[0,0],[1,0],[1,1]]\n  - name: a\n    polygon: [[0,0],[1,0],[1,1]]\n");
+  test::writeText(dir + "/key.yaml", "zones:\n  - name: a\n    colour: red\n    polygon: [[0,0],[1,0],[1,1]]\n");
+  test::writeText(dir + "/nan.yaml", "zones:\n  - name: a\n    polygon: [[0,0],[.nan,0],[1,1]]\n");
+  for (const char* f : {"empty", "two_points", "dup", "key", "nan", "missing"})
+    EXPECT_THROW(readZonesYaml(dir + "/" + f + ".yaml"), InputError) << f;
+}
+
+TEST(ZoneValidation, FindsOutsideOverlapAndNoFreeSpace) {
+  const auto room = test::asymmetricRoom();  // free space within (0.5, 8.5) x (0.5, 6.5)
+  const Zone a{"a", {{0.6, 0.6}, {5.0, 0.6}, {5.0, 6.0}, {0.6, 6.0}}};
+  const Zone b_overlapping{"b", {{4.0, 0.6}, {8.4, 0.6}, {8.4, 6.0}, {4.0, 6.0}}};
+  const Zone outside{"far", {{20.0, 20.0}, {21.0, 20.0}, {21.0, 21.0}}};
+  const Zone in_wall{"wall", {{0.0, 0.0}, {0.3, 0.0}, {0.3, 0.3}, {0.0, 0.3}}};
+  auto joined = [](const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += x + "\n";
+    return s;
+  };
+  const auto overlap = joined(findZoneProblems(room, {a, b_overlapping}));
+  EXPECT_NE(overlap.find("overlap"), std::string::npos) << overlap;
+  const auto out = joined(findZoneProblems(room, {a, outside}));
+  EXPECT_NE(out.find("outside the map"), std::string::npos) << out;
+  const auto nofree = joined(findZoneProblems(room, {a, in_wall}));
+  EXPECT_NE(nofree.find("free space"), std::string::npos) << nofree;
+  EXPECT_THROW(validateZones(room, {}, "test"), InputError);
+}
+
+TEST(AutoZoning, FollowsRoomsAndHitsTargetSize) {
+  // The office world: rooms off a corridor. With a target about one room, zoning must
+  // produce several valid zones, each a sensible size.
+  const auto world = buildOfficeTwoZone(1);
+  AutoZoningParams p;
+  p.target_area_m2 = 60.0;
+  const auto zones = autoZone(world.map, p);
+  EXPECT_TRUE(findZoneProblems(world.map, zones).empty());
+  EXPECT_GE(zones.size(), 6u);
+  EXPECT_LE(zones.size(), 25u);
+  for (const auto& z : zones) EXPECT_LT(polygonAreaM2(z.polygon), 4.0 * p.target_area_m2) << z.name;
+  // Deterministic: the same map and parameters give the same zones.
+  const auto again = autoZone(world.map, p);
+  ASSERT_EQ(again.size(), zones.size());
+  EXPECT_EQ(again.front().polygon.size(), zones.front().polygon.size());
+}
+
+TEST(AutoZoning, LargeFloorGetsAtLeastTwelveValidZones) {
+  const auto world = buildLargeFloor(1);
+  EXPECT_GE(world.zones.size(), 12u);
+  EXPECT_TRUE(findZoneProblems(world.map, world.zones).empty());
+  EXPECT_GE(freeAreaM2(world.map), 3000.0);
+}
+
+TEST(ZoneDrawing, WritesAPngOfTheMapSize) {
+  const auto dir = test::tempDir("zones_png");
+  const auto world = buildOfficeTwoZone(1);
+  writeZonesPng(world.map, world.zones, dir + "/z.png");
+  const cv::Mat img = cv::imread(dir + "/z.png");
+  ASSERT_FALSE(img.empty());
+  EXPECT_GE(img.cols, static_cast<int>(world.map.getSizeX()));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/z.png.tmp"));
+}
+
+}  // namespace
+}  // namespace krp
