@@ -4,11 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "mrpt_krp_plugin/common/atomic_file.h"
-#include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/png_file.h"
 #include "mrpt_krp_plugin/zones/zone_drawing.h"
 
 namespace krp {
@@ -73,11 +71,7 @@ cv::Mat drawLinePlot(const std::string& title, const std::string& x_label, const
 void writeLinePlot(const std::string& png_path, const std::string& title, const std::string& x_label,
                    const std::string& y_label, const std::vector<PlotSeries>& series, const LinePlotParams& params) {
   const cv::Mat img = drawLinePlot(title, x_label, y_label, series, params);
-  AtomicFile f(png_path);
-  const std::string tmp_png = f.tempPath() + ".png";
-  if (!cv::imwrite(tmp_png, img)) throw InputError(png_path, "cannot write PNG");
-  std::rename(tmp_png.c_str(), f.tempPath().c_str());
-  f.commit();
+  writePngAtomically(png_path, img);
 }
 
 }  // namespace krp

@@ -62,7 +62,6 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   if (!initialized_) {
     reseedMrptGlobalRandom(params_.seed);
     init_->initialize(pf_, filter_.m_options, *map_, *step.observations);
-    if (!filter_.m_options.adaptiveSampleSize) filter_.m_options.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
     initialized_ = true;
   }
   auto action = step.action;

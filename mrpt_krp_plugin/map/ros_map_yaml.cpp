@@ -12,6 +12,7 @@
 
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/yaml_file.h"
 #include "mrpt_krp_plugin/map/grid_image.h"
 #include "mrpt_krp_plugin/map/pgm_header.h"
 
@@ -62,13 +63,7 @@ cv::Mat readImage(const std::string& path, const std::string& yaml_path, const M
 }  // namespace
 
 RosMapMetadata readRosMapMetadata(const std::string& yaml_path, const MapSanityLimits& limits) {
-  if (!fs::exists(yaml_path)) throw InputError(yaml_path, "file does not exist");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(yaml_path);
-  } catch (const YAML::Exception& e) {
-    throw InputError(yaml_path, std::string("malformed YAML: ") + e.what());
-  }
+  const YAML::Node root = loadYamlFile(yaml_path);
   if (!root.IsMap()) throw InputError(yaml_path, "expected a YAML mapping with map_server keys");
 
   static const std::set<std::string> kKnown = {"image", "resolution", "origin", "negate",

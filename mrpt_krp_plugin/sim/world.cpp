@@ -10,6 +10,7 @@
 
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/yaml_file.h"
 
 namespace fs = std::filesystem;
 
@@ -49,13 +50,7 @@ LidarProfile World::lidar(const std::string& profile_name) const {
 }
 
 World readWorld(const std::string& path) {
-  if (!fs::exists(path)) throw InputError(path, "file does not exist");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, std::string("malformed YAML: ") + e.what());
-  }
+  const YAML::Node root = loadYamlFile(path);
   if (!root.IsMap()) throw InputError(path, "expected a YAML mapping");
   rejectUnknown(root, {"name", "map", "zones", "lidar_profiles", "default_lidar_profile", "lidar_overrides", "clutter"},
                 path, "");

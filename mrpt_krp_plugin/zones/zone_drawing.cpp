@@ -2,11 +2,9 @@
 #include "mrpt_krp_plugin/zones/zone_drawing.h"
 
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "mrpt_krp_plugin/common/atomic_file.h"
-#include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/png_file.h"
 #include "mrpt_krp_plugin/map/grid_image.h"
 
 namespace krp {
@@ -63,10 +61,7 @@ cv::Mat drawZones(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector
 void writeZonesPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector<Zone>& zones,
                    const std::string& png_path, const ZoneDrawingParams& params) {
   const cv::Mat img = drawZones(grid, zones, params);
-  AtomicFile f(png_path);
-  if (!cv::imwrite(f.tempPath() + ".png", img)) throw InputError(png_path, "cannot write PNG");
-  std::rename((f.tempPath() + ".png").c_str(), f.tempPath().c_str());
-  f.commit();
+  writePngAtomically(png_path, img);
 }
 
 }  // namespace krp

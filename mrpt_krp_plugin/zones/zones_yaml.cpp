@@ -4,23 +4,17 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <filesystem>
 #include <set>
 #include <sstream>
 
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/yaml_file.h"
 
 namespace krp {
 
 std::vector<Zone> readZonesYaml(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw InputError(path, "file does not exist");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, std::string("malformed YAML: ") + e.what());
-  }
+  const YAML::Node root = loadYamlFile(path);
   if (!root.IsMap() || !root["zones"]) throw InputError(path, "expected a top-level 'zones' list");
   for (const auto& kv : root)
     if (kv.first.as<std::string>() != "zones") throw InputError(path, "unknown key '" + kv.first.as<std::string>() + "'");
