@@ -23,7 +23,7 @@ APT_PACKAGES=(
   build-essential cmake git pkg-config python3-venv python3-pip unzip ca-certificates
   # core libraries
   libmrpt-dev mrpt-apps mrpt-common libopencv-dev liboctomap-dev libeigen3-dev
-  libgtest-dev libgmock-dev libyaml-cpp-dev zlib1g-dev
+  libgtest-dev libgmock-dev libyaml-cpp-dev nlohmann-json3-dev zlib1g-dev
   # ROS 1 as packaged by Debian (catkin must be named: see shared/notes/dependencies.md)
   catkin libroscpp-dev libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev
   libstd-srvs-dev libtf2-ros-dev librosbag-dev ros-core

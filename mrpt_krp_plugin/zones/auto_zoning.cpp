@@ -146,6 +146,38 @@ void mergeSmall(cv::Mat& labels, int n, double min_cells) {
       if (labels.at<int>(r, c) >= 0) labels.at<int>(r, c) = find(labels.at<int>(r, c));
 }
 
+// A zone is stored as its outer outline, so every free cell inside that outline belongs to it.
+// Hands such cells (enclosed regions, or cells an 8-connected neighbour reaches diagonally
+// across the outline) to the enclosing region, until no outline claims another's cells.
+int absorbEnclosed(cv::Mat& labels, int n, int max_rounds) {
+  for (int round = 0; round < max_rounds; ++round) {
+    bool changed = false;
+    for (int l = 0; l < n; ++l) {
+      const auto contour = outerContour(labels == l);
+      if (contour.size() < 3) continue;
+      cv::Mat filled = cv::Mat::zeros(labels.size(), CV_8U);
+      cv::fillPoly(filled, std::vector<std::vector<cv::Point>>{contour}, cv::Scalar(255));
+      const cv::Mat others = (labels >= 0) & (labels != l) & filled;
+      if (cv::countNonZero(others) == 0) continue;
+      labels.setTo(l, others);
+      changed = true;
+    }
+    n = relabelConnected(labels);
+    if (!changed) break;
+  }
+  return n;
+}
+
+// Drops regions below `min_cells`: after merging, only isolated pockets that touch no other
+// region are left that small, and no robot fits in them.
+int dropTiny(cv::Mat& labels, int n, double min_cells) {
+  for (int l = 0; l < n; ++l) {
+    const cv::Mat mask = labels == l;
+    if (cv::countNonZero(mask) < min_cells) labels.setTo(kNone, mask);
+  }
+  return relabelConnected(labels);
+}
+
 }  // namespace
 
 std::vector<Zone> autoZone(const mrpt::maps::COccupancyGridMap2D& grid, const AutoZoningParams& p) {
@@ -213,6 +245,8 @@ std::vector<Zone> autoZone(const mrpt::maps::COccupancyGridMap2D& grid, const Au
   }
   mergeSmall(labels, n, p.merge_below_factor * target_cells);
   n = relabelConnected(labels);
+  n = absorbEnclosed(labels, n, p.max_split_rounds);
+  n = dropTiny(labels, n, p.min_zone_area_m2 / cell_area);
 
   // Order zones top-left first so names are stable and readable on the picture.
   struct Region {

@@ -19,7 +19,8 @@ struct AutoZoningParams {
   double merge_below_factor = 0.35;    ///< a region smaller than this x target joins a neighbour
   double passage_half_width_m = 0.55;  ///< free space narrower than 2x this (doors) separates rooms [m]
   double min_island_area_m2 = 0.5;     ///< free islands smaller than this are ignored [m^2]
-  int max_split_rounds = 8;            ///< bound on split passes (ring-shaped regions need several)
+  double min_zone_area_m2 = 2.0;       ///< isolated pockets smaller than this get no zone [m^2]
+  int max_split_rounds = 8;            ///< bound on split and enclosure passes (rings need several)
   uint64_t seed = 1;                   ///< k-means seed for splits
   CellClassParams cells;
 };

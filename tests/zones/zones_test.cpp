@@ -81,6 +81,31 @@ TEST(AutoZoning, FollowsRoomsAndHitsTargetSize) {
   EXPECT_EQ(again.front().polygon.size(), zones.front().polygon.size());
 }
 
+// Occupies the outline of the rectangle [x0, x1] x [y0, y1] (a wall one cell thick).
+void drawWallBox(mrpt::maps::COccupancyGridMap2D& g, double x0, double y0, double x1, double y1) {
+  for (int cx = g.x2idx(x0); cx <= g.x2idx(x1); ++cx)
+    for (int cy = g.y2idx(y0); cy <= g.y2idx(y1); ++cy)
+      if (cx == g.x2idx(x0) || cx == g.x2idx(x1) || cy == g.y2idx(y0) || cy == g.y2idx(y1)) g.setCell(cx, cy, 0.0f);
+}
+
+TEST(AutoZoning, EnclosedRoomsAndTinyPocketsStillGiveValidZones) {
+  // A hall with a closed room standing inside it (the hall's outline encloses the room)
+  // and a closed pocket too small for a robot: zones must neither overlap nor be empty.
+  mrpt::maps::COccupancyGridMap2D g(0, 30, 0, 20, 0.1);
+  g.fill(1.0f);
+  drawWallBox(g, 0.05, 0.05, 29.9, 19.9);
+  drawWallBox(g, 10, 6, 18, 13);        // the inner room
+  drawWallBox(g, 24, 3, 24.9, 3.9);    // a 0.7 m^2 pocket
+  AutoZoningParams p;
+  p.target_area_m2 = 200.0;
+  const auto zones = autoZone(g, p);
+  const auto problems = findZoneProblems(g, zones);
+  std::string all;
+  for (const auto& s : problems) all += s + "; ";
+  EXPECT_TRUE(problems.empty()) << all;
+  EXPECT_GE(zones.size(), 2u);
+}
+
 TEST(AutoZoning, LargeFloorGetsAtLeastTwelveValidZones) {
   const auto world = buildLargeFloor(1);
   EXPECT_GE(world.zones.size(), 12u);
