@@ -45,15 +45,25 @@ cv::Mat drawZones(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector
 
   const double font = std::max(0.35, img.cols / 3600.0);
   for (size_t i = 0; i < zones.size(); ++i) {
-    const cv::Moments m = cv::moments(outlines[i]);
-    if (m.m00 == 0) continue;
-    char text[96];
-    std::snprintf(text, sizeof(text), "%s (%.0f m2)", zones[i].name.c_str(), polygonAreaM2(zones[i].polygon));
+    if (outlines[i].size() < 3) continue;
+    // The label goes where the zone is widest (farthest from its outline), on two short lines,
+    // so that it stays inside narrow or non-convex zones and off its neighbours' labels.
+    cv::Mat inside = cv::Mat::zeros(img.size(), CV_8U), dist;
+    cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{outlines[i]}, cv::Scalar(255));
+    cv::distanceTransform(inside, dist, cv::DIST_L2, cv::DIST_MASK_3);
+    cv::Point centre;
+    cv::minMaxLoc(dist, nullptr, nullptr, nullptr, &centre);
+    char area[48];
+    std::snprintf(area, sizeof(area), "%.0f m2", polygonAreaM2(zones[i].polygon));
+    const std::string lines[2] = {zones[i].name, area};
     int base = 0;
-    const cv::Size ts = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, font, thickness, &base);
-    const cv::Point org(static_cast<int>(m.m10 / m.m00) - ts.width / 2, static_cast<int>(m.m01 / m.m00) + ts.height / 2);
-    cv::putText(img, text, org, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(255, 255, 255), thickness + 2);
-    cv::putText(img, text, org, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(20, 20, 20), thickness);
+    const int line_h = cv::getTextSize("Ag", cv::FONT_HERSHEY_SIMPLEX, font, thickness, &base).height * 3 / 2;
+    for (int k = 0; k < 2; ++k) {
+      const cv::Size ts = cv::getTextSize(lines[k], cv::FONT_HERSHEY_SIMPLEX, font, thickness, &base);
+      const cv::Point org(centre.x - ts.width / 2, centre.y + k * line_h);
+      cv::putText(img, lines[k], org, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(255, 255, 255), thickness + 2);
+      cv::putText(img, lines[k], org, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(20, 20, 20), thickness);
+    }
   }
   return img;
 }
