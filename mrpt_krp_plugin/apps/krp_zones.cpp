@@ -6,6 +6,8 @@
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/zones/auto_zoning.h"
+#include "mrpt_krp_plugin/zones/landmark_drawing.h"
+#include "mrpt_krp_plugin/zones/landmarks_yaml.h"
 #include "mrpt_krp_plugin/zones/zone_drawing.h"
 #include "mrpt_krp_plugin/zones/zone_validation.h"
 #include "mrpt_krp_plugin/zones/zones_yaml.h"
@@ -15,12 +17,15 @@ using krp::apps::CliArgs;
 static int run(int argc, char** argv) {
   CliArgs args("krp-zones",
                "Loads a map (.yaml, .gridmap[.gz], .bt/.ot), then validates --zones or zones it automatically, "
-               "and writes the zones as YAML and a labelled PNG.",
+               "and writes the zones as YAML and a labelled PNG; optionally extracts each zone's landmarks.",
                {{"map", "FILE", "map file (required)", ""},
                 {"zones", "FILE", "zones.yaml to validate (otherwise: automatic zoning)", ""},
                 {"target-area", "M2", "automatic zoning: target zone area", "80"},
                 {"out-yaml", "FILE", "where to write the zones (automatic zoning)", ""},
                 {"out-png", "FILE", "where to write the picture", ""},
+                {"landmarks-yaml", "FILE", "also extract K landmarks per zone and write them here", ""},
+                {"landmarks-png", "FILE", "picture of the zones with their numbered landmarks", ""},
+                {"keypoints", "K", "landmarks per zone", "12"},
                 {"octomap-z-min", "M", "OctoMap slice: lower height", "0.05"},
                 {"octomap-z-max", "M", "OctoMap slice: upper height", "0.6"}});
   if (!args.parse(argc, argv)) return 0;
@@ -50,6 +55,14 @@ static int run(int argc, char** argv) {
   if (args.has("out-png")) {
     krp::writeZonesPng(g, zones, args.get("out-png"));
     std::cout << "picture: " << args.get("out-png") << "\n";
+  }
+  if (args.has("landmarks-yaml") || args.has("landmarks-png")) {
+    krp::LandmarkParams lmp;
+    lmp.keypoints_per_zone = static_cast<int>(args.number("keypoints"));
+    const auto landmarks = krp::extractLandmarks(g, zones, lmp);
+    std::cout << lmp.keypoints_per_zone << " landmarks per zone (" << krp::LandmarkParams::method() << ")\n";
+    if (args.has("landmarks-yaml")) krp::writeLandmarksYaml(landmarks, lmp, args.get("landmarks-yaml"));
+    if (args.has("landmarks-png")) krp::writeLandmarksPng(g, zones, landmarks, args.get("landmarks-png"));
   }
   return 0;
 }

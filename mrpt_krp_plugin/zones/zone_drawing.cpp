@@ -19,23 +19,30 @@ cv::Scalar zoneColour(size_t i) {
   return {static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2])};
 }
 
+double zoneDrawingScale(const mrpt::maps::COccupancyGridMap2D& grid, const ZoneDrawingParams& p) {
+  const int cols = static_cast<int>(grid.getSizeX());
+  if (cols < p.min_image_width_px) return std::ceil(static_cast<double>(p.min_image_width_px) / cols);
+  if (cols > p.max_image_width_px) return static_cast<double>(p.max_image_width_px) / cols;
+  return 1.0;
+}
+
+cv::Point zoneDrawingPixel(const mrpt::maps::COccupancyGridMap2D& grid, const mrpt::math::TPoint2D& p, double scale) {
+  const cv::Point q = worldToPixel(grid, p);
+  return {static_cast<int>((q.x + 0.5) * scale), static_cast<int>((q.y + 0.5) * scale)};
+}
+
 cv::Mat drawZones(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector<Zone>& zones,
                   const ZoneDrawingParams& p) {
   cv::Mat grey = gridToGrey(grid), img;
   cv::cvtColor(grey, img, cv::COLOR_GRAY2BGR);
-  double scale = 1.0;
-  if (img.cols < p.min_image_width_px) scale = std::ceil(static_cast<double>(p.min_image_width_px) / img.cols);
-  else if (img.cols > p.max_image_width_px) scale = static_cast<double>(p.max_image_width_px) / img.cols;
+  const double scale = zoneDrawingScale(grid, p);
   cv::resize(img, img, cv::Size(), scale, scale, cv::INTER_NEAREST);
 
   cv::Mat tint = img.clone();
   std::vector<std::vector<cv::Point>> outlines;
   for (size_t i = 0; i < zones.size(); ++i) {
     std::vector<cv::Point> px;
-    for (const auto& pt : zones[i].polygon) {
-      const cv::Point q = worldToPixel(grid, pt);
-      px.emplace_back(static_cast<int>((q.x + 0.5) * scale), static_cast<int>((q.y + 0.5) * scale));
-    }
+    for (const auto& pt : zones[i].polygon) px.push_back(zoneDrawingPixel(grid, pt, scale));
     cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{px}, zoneColour(i));
     outlines.push_back(px);
   }
@@ -48,11 +55,14 @@ cv::Mat drawZones(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector
     if (outlines[i].size() < 3) continue;
     // The label goes where the zone is widest (farthest from its outline), on two short lines,
     // so that it stays inside narrow or non-convex zones and off its neighbours' labels.
-    cv::Mat inside = cv::Mat::zeros(img.size(), CV_8U), dist;
-    cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{outlines[i]}, cv::Scalar(255));
+    // A one-pixel empty border: distanceTransform treats the image edge as far away.
+    cv::Mat inside = cv::Mat::zeros(img.rows + 2, img.cols + 2, CV_8U), dist;
+    cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{outlines[i]}, cv::Scalar(255), cv::LINE_8, 0,
+                 cv::Point(1, 1));
     cv::distanceTransform(inside, dist, cv::DIST_L2, cv::DIST_MASK_3);
     cv::Point centre;
     cv::minMaxLoc(dist, nullptr, nullptr, nullptr, &centre);
+    centre -= cv::Point(1, 1);
     char area[48];
     std::snprintf(area, sizeof(area), "%.0f m2", polygonAreaM2(zones[i].polygon));
     const std::string lines[2] = {zones[i].name, area};

@@ -25,6 +25,12 @@ cv::Mat drawZones(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector
 void writeZonesPng(const mrpt::maps::COccupancyGridMap2D& grid, const std::vector<Zone>& zones,
                    const std::string& png_path, const ZoneDrawingParams& params = {});
 
+/// Image pixels per map cell in drawZones' picture.
+double zoneDrawingScale(const mrpt::maps::COccupancyGridMap2D& grid, const ZoneDrawingParams& params = {});
+
+/// Where a map point falls in drawZones' picture.
+cv::Point zoneDrawingPixel(const mrpt::maps::COccupancyGridMap2D& grid, const mrpt::math::TPoint2D& p, double scale);
+
 /// A distinct colour for index i (BGR), shared by every picture that colours zones.
 cv::Scalar zoneColour(size_t i);
 

@@ -3,13 +3,13 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <cmath>
 #include <set>
 #include <sstream>
 
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/yaml_file.h"
+#include "mrpt_krp_plugin/zones/yaml_points.h"
 
 namespace krp {
 
@@ -38,21 +38,8 @@ std::vector<Zone> readZonesYaml(const std::string& path) {
     }
     if (zone.name.empty()) throw InputError(path, where + ": empty name");
     if (!names.insert(zone.name).second) throw InputError(path, "zone name '" + zone.name + "' is used twice");
-    const auto poly = z["polygon"];
-    if (!poly || !poly.IsSequence() || poly.size() < 3)
-      throw InputError(path, "zone '" + zone.name + "': 'polygon' must list at least 3 [x, y] points");
-    for (const auto& pt : poly) {
-      if (!pt.IsSequence() || pt.size() != 2) throw InputError(path, "zone '" + zone.name + "': a point is not [x, y]");
-      double x, y;
-      try {
-        x = pt[0].as<double>();
-        y = pt[1].as<double>();
-      } catch (const YAML::Exception&) {
-        throw InputError(path, "zone '" + zone.name + "': a coordinate is not a number");
-      }
-      if (!std::isfinite(x) || !std::isfinite(y)) throw InputError(path, "zone '" + zone.name + "': NaN or infinite point");
-      zone.polygon.push_back({x, y});
-    }
+    // The zone's own name in errors; "polygon" says which list is wrong.
+    zone.polygon = readYamlPoints(z["polygon"], path, "zone '" + zone.name + "' polygon", 3);
     zones.push_back(std::move(zone));
   }
   if (zones.empty()) throw InputError(path, "the zone list is empty");
@@ -64,10 +51,9 @@ void writeZonesYaml(const std::vector<Zone>& zones, const std::string& path) {
   o.precision(10);
   o << "# Zones in grid-frame metres. Written by mrpt_krp_plugin.\nzones:\n";
   for (const auto& z : zones) {
-    o << "  - name: " << z.name << "\n    polygon: [";
-    for (size_t i = 0; i < z.polygon.size(); ++i)
-      o << (i ? ", " : "") << "[" << z.polygon[i].x << ", " << z.polygon[i].y << "]";
-    o << "]\n";
+    o << "  - name: " << z.name << "\n    polygon: ";
+    writeYamlPoints(o, z.polygon);
+    o << "\n";
   }
   writeFileAtomically(path, o.str());
 }

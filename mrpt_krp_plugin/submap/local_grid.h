@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/math/TPoint2D.h>
+#include <opencv2/core.hpp>
+
+namespace krp {
+
+/// What a submap cell is known to be.
+enum class CellState : uint8_t { kUnknown = 0, kFree = 1, kOccupied = 2 };
+
+/// A robot-centric local occupancy grid: the robot at the centre, its heading pointing up
+/// (towards row 0). One cell is one image pixel of the images the models see.
+struct LocalGrid {
+  cv::Mat cells;             ///< CV_8U of CellState, size_px x size_px
+  double resolution_m = 0;   ///< cell side [m]
+
+  int sizePx() const { return cells.rows; }
+  /// Pixel (column, row) of a point given in the robot frame (x forward, y left) [m].
+  /// The one place where the robot frame meets submap image coordinates.
+  cv::Point2d robotToPixel(const mrpt::math::TPoint2D& p) const;
+  /// The robot-frame point at the centre of pixel (column, row).
+  mrpt::math::TPoint2D pixelToRobot(const cv::Point2d& px) const;
+  CellState at(int col, int row) const { return static_cast<CellState>(cells.at<uint8_t>(row, col)); }
+};
+
+}  // namespace krp

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "mrpt_krp_plugin/sim/lidar_profile.h"
+
+namespace krp {
+
+/// The submap's extent and cell count. The cell count is the models' input size, so the
+/// resolution is size_m / size_px.
+struct SubmapParams {
+  double size_m = 16.0;  ///< side of the square submap [m]
+  int size_px = 128;     ///< cells per side (= image pixels) [px]
+  /// Beams at or beyond max range carry free space up to this fraction of max range: a
+  /// "no return" still says the way is clear, though less surely near the range limit.
+  double no_return_free_fraction = 0.9;
+  /// Each scan's hit points are marked this many cells thick, so one-cell walls survive
+  /// the rasterization of slightly noisy rays [cells].
+  int hit_radius_cells = 0;
+
+  double resolutionM() const { return size_m / size_px; }
+};
+
+/// Submap parameters sized for a lidar: the side covers the lidar's diameter of view, within
+/// [min_side_m, max_side_m] (a 3.5 m LDS-01 gets 8 m, a 12 m scanner 24 m, a 25 m one 24 m:
+/// beyond that a 128 px image would lose walls to resolution).
+SubmapParams submapParamsForLidar(const LidarProfile& lidar, int size_px = 128, double min_side_m = 8.0,
+                                  double max_side_m = 24.0);
+
+/// Throws InputError if the parameters cannot make a submap.
+void validateSubmapParams(const SubmapParams& p);
+
+}  // namespace krp
