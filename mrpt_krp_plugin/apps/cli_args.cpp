@@ -2,6 +2,7 @@
 #include "cli_args.h"
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -102,6 +103,13 @@ int runMain(const std::string& program, int (*body)(int, char**), int argc, char
     std::cerr << program << ": failed: " << e.what() << "\n";
     return 1;
   }
+}
+
+std::string worldFilePath(const std::string& w, const std::string& world_dir) {
+  namespace fs = std::filesystem;
+  const fs::path p = w.find(".yaml") != std::string::npos ? fs::path(w) : fs::path(world_dir) / w / (w + ".world.yaml");
+  if (!fs::exists(p)) throw InputError(p.string(), "world file not found (run krp-make-worlds, or check --world-dir)");
+  return p.string();
 }
 
 }  // namespace krp::apps

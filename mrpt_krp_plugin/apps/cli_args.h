@@ -39,6 +39,10 @@ class CliArgs {
   std::map<std::string, std::string> values_;
 };
 
+/// A world given by name (looked up as DIR/NAME/NAME.world.yaml) or as a *.world.yaml path.
+/// Throws InputError if the file does not exist.
+std::string worldFilePath(const std::string& name_or_path, const std::string& world_dir);
+
 /// Runs `body`, turning exceptions into a message on stderr and exit code 2 (bad input) or 1.
 int runMain(const std::string& program, int (*body)(int, char**), int argc, char** argv);
 

@@ -39,11 +39,7 @@ static int run(int argc, char** argv) {
                 {"save-rawlogs", "", "also write each trial as an MRPT rawlog + ground truth under OUT/rawlogs", ""}});
   if (!args.parse(argc, argv)) return 0;
   krp::BenchConfig cfg;
-  for (const auto& w : args.list("worlds")) {
-    const fs::path p = w.find(".yaml") != std::string::npos ? fs::path(w) : fs::path(args.get("world-dir")) / w / (w + ".world.yaml");
-    if (!fs::exists(p)) throw krp::InputError(p.string(), "world file not found (run krp-make-worlds, or check --world-dir)");
-    cfg.world_files.push_back(p.string());
-  }
+  for (const auto& w : args.list("worlds")) cfg.world_files.push_back(krp::apps::worldFilePath(w, args.get("world-dir")));
   cfg.lidars = args.list("lidars");
   cfg.methods = args.list("methods");
   cfg.trials = static_cast<int>(args.integer("trials"));

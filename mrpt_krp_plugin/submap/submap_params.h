@@ -9,7 +9,7 @@ namespace krp {
 /// resolution is size_m / size_px.
 struct SubmapParams {
   double size_m = 16.0;  ///< side of the square submap [m]
-  int size_px = 128;     ///< cells per side (= image pixels) [px]
+  int size_px = 160;     ///< cells per side (= image pixels) [px]
   /// Beams at or beyond max range carry free space up to this fraction of max range: a
   /// "no return" still says the way is clear, though less surely near the range limit.
   double no_return_free_fraction = 0.9;
@@ -22,8 +22,8 @@ struct SubmapParams {
 
 /// Submap parameters sized for a lidar: the side covers the lidar's diameter of view, within
 /// [min_side_m, max_side_m] (a 3.5 m LDS-01 gets 8 m, a 12 m scanner 24 m, a 25 m one 24 m:
-/// beyond that a 128 px image would lose walls to resolution).
-SubmapParams submapParamsForLidar(const LidarProfile& lidar, int size_px = 128, double min_side_m = 8.0,
+/// beyond that a 160 px image would lose thin walls to resolution).
+SubmapParams submapParamsForLidar(const LidarProfile& lidar, int size_px = 160, double min_side_m = 8.0,
                                   double max_side_m = 24.0);
 
 /// Throws InputError if the parameters cannot make a submap.
