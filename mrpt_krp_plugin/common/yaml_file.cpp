@@ -16,4 +16,13 @@ YAML::Node loadYamlFile(const std::string& path) {
   }
 }
 
+void rejectUnknownYamlKeys(const YAML::Node& node, const std::set<std::string>& known, const std::string& file,
+                           const std::string& context, const std::string& key_prefix) {
+  for (const auto& kv : node) {
+    const auto key = kv.first.as<std::string>();
+    if (!known.count(key))
+      throw InputError(file, (context.empty() ? "" : context + ": ") + "unknown key '" + key_prefix + key + "'");
+  }
+}
+
 }  // namespace krp

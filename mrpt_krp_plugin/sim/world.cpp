@@ -17,14 +17,6 @@ namespace fs = std::filesystem;
 namespace krp {
 namespace {
 
-void rejectUnknown(const YAML::Node& n, const std::set<std::string>& known, const std::string& file,
-                   const std::string& where) {
-  for (const auto& kv : n) {
-    const auto key = kv.first.as<std::string>();
-    if (!known.count(key)) throw InputError(file, "unknown key '" + where + key + "'");
-  }
-}
-
 double number(const YAML::Node& n, const std::string& key, const std::string& file, double lo, double hi) {
   double v;
   try {
@@ -52,8 +44,9 @@ LidarProfile World::lidar(const std::string& profile_name) const {
 World readWorld(const std::string& path) {
   const YAML::Node root = loadYamlFile(path);
   if (!root.IsMap()) throw InputError(path, "expected a YAML mapping");
-  rejectUnknown(root, {"name", "map", "zones", "lidar_profiles", "default_lidar_profile", "lidar_overrides", "clutter"},
-                path, "");
+  rejectUnknownYamlKeys(root,
+                        {"name", "map", "zones", "lidar_profiles", "default_lidar_profile", "lidar_overrides", "clutter"},
+                        path);
   for (const char* req : {"name", "map", "zones", "lidar_profiles"})
     if (!root[req]) throw InputError(path, std::string("missing required key '") + req + "'");
   const fs::path dir = fs::path(path).parent_path();
@@ -73,14 +66,15 @@ World readWorld(const std::string& path) {
   if (std::find(w.lidar_profiles.begin(), w.lidar_profiles.end(), w.default_lidar_profile) == w.lidar_profiles.end())
     throw InputError(path, "default_lidar_profile '" + w.default_lidar_profile + "' is not in lidar_profiles");
   if (const auto o = root["lidar_overrides"]) {
-    rejectUnknown(o, {"range_noise_std_m", "dropout_probability"}, path, "lidar_overrides.");
+    rejectUnknownYamlKeys(o, {"range_noise_std_m", "dropout_probability"}, path, "", "lidar_overrides.");
     if (o["range_noise_std_m"]) w.range_noise_std_m = number(o, "range_noise_std_m", path, 0.0, 1.0);
     if (o["dropout_probability"]) w.dropout_probability = number(o, "dropout_probability", path, 0.0, 1.0);
   }
   if (const auto c = root["clutter"]) {
-    rejectUnknown(c, {"boxes_per_100m2", "box_min_side_m", "box_max_side_m", "pallets_per_100m2", "people_per_100m2",
-                      "placement_clearance_m"},
-                  path, "clutter.");
+    rejectUnknownYamlKeys(c,
+                          {"boxes_per_100m2", "box_min_side_m", "box_max_side_m", "pallets_per_100m2",
+                           "people_per_100m2", "placement_clearance_m"},
+                          path, "", "clutter.");
     auto& k = w.clutter;
     if (c["boxes_per_100m2"]) k.boxes_per_100m2 = number(c, "boxes_per_100m2", path, 0.0, 100.0);
     if (c["box_min_side_m"]) k.box_min_side_m = number(c, "box_min_side_m", path, 0.01, 10.0);

@@ -30,9 +30,7 @@ void writeLandmarksYaml(const std::vector<ZoneLandmarks>& landmarks, const Landm
 std::vector<ZoneLandmarks> readLandmarksYaml(const std::string& path) {
   const YAML::Node root = loadYamlFile(path);
   if (!root.IsMap()) throw InputError(path, "expected a mapping with 'keypoints_per_zone' and 'zones'");
-  const std::set<std::string> known = {"method", "keypoints_per_zone", "parameters", "zones"};
-  for (const auto& kv : root)
-    if (!known.count(kv.first.as<std::string>())) throw InputError(path, "unknown key '" + kv.first.as<std::string>() + "'");
+  rejectUnknownYamlKeys(root, {"method", "keypoints_per_zone", "parameters", "zones"}, path);
   int k = 0;
   try {
     k = root["keypoints_per_zone"].as<int>();

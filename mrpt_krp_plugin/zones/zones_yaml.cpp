@@ -16,8 +16,7 @@ namespace krp {
 std::vector<Zone> readZonesYaml(const std::string& path) {
   const YAML::Node root = loadYamlFile(path);
   if (!root.IsMap() || !root["zones"]) throw InputError(path, "expected a top-level 'zones' list");
-  for (const auto& kv : root)
-    if (kv.first.as<std::string>() != "zones") throw InputError(path, "unknown key '" + kv.first.as<std::string>() + "'");
+  rejectUnknownYamlKeys(root, {"zones"}, path);
   const auto list = root["zones"];
   if (!list.IsSequence()) throw InputError(path, "'zones' must be a list");
   std::vector<Zone> zones;
@@ -26,10 +25,7 @@ std::vector<Zone> readZonesYaml(const std::string& path) {
     const auto z = list[i];
     const std::string where = "zone #" + std::to_string(i);
     if (!z.IsMap()) throw InputError(path, where + " is not a mapping");
-    for (const auto& kv : z) {
-      const auto key = kv.first.as<std::string>();
-      if (key != "name" && key != "polygon") throw InputError(path, where + ": unknown key '" + key + "'");
-    }
+    rejectUnknownYamlKeys(z, {"name", "polygon"}, path, where);
     Zone zone;
     try {
       zone.name = z["name"].as<std::string>();
