@@ -12,9 +12,7 @@ namespace krp {
 ZonePoseSampler::ZonePoseSampler(const mrpt::maps::COccupancyGridMap2D& map, const std::vector<Zone>& zones,
                                  double clearance_m)
     : map_(map), cells_(zones.size()) {
-  cv::Mat clearance;
-  cv::distanceTransform(freeMask(map), clearance, cv::DIST_L2, cv::DIST_MASK_5);
-  clearance *= map.getResolution();
+  const cv::Mat clearance = freeClearanceM(map);
   const cv::Mat labels = rasterizeZones(map, zones);
   for (int r = 0; r < labels.rows; ++r)
     for (int c = 0; c < labels.cols; ++c) {

@@ -2,6 +2,7 @@
 #include "mrpt_krp_plugin/map/grid_image.h"
 
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 
 namespace krp {
 
@@ -36,6 +37,12 @@ cv::Mat gridToGrey(const mrpt::maps::COccupancyGridMap2D& grid) {
 
 cv::Mat freeMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p) {
   return renderGrid(grid, [&](double occ) { return static_cast<uint8_t>(occ < p.max_free_occupancy ? 255 : 0); });
+}
+
+cv::Mat freeClearanceM(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p) {
+  cv::Mat dist;
+  cv::distanceTransform(freeMask(grid, p), dist, cv::DIST_L2, cv::DIST_MASK_5);
+  return dist * grid.getResolution();
 }
 
 cv::Mat occupiedMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p) {

@@ -25,6 +25,10 @@ cv::Mat gridToGrey(const mrpt::maps::COccupancyGridMap2D& grid);
 /// 255 where the cell is free, 0 elsewhere (row 0 at the top).
 cv::Mat freeMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p = {});
 
+/// Per cell, the distance to the nearest non-free cell [m] (CV_32F, row 0 at the top): how
+/// much room a robot or an object has there.
+cv::Mat freeClearanceM(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p = {});
+
 /// 255 where the cell is occupied, 0 elsewhere (row 0 at the top).
 cv::Mat occupiedMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p = {});
 

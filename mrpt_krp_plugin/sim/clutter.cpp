@@ -36,14 +36,11 @@ void fillDisc(mrpt::maps::COccupancyGridMap2D& g, double cx, double cy, double r
 mrpt::maps::COccupancyGridMap2D addClutter(const mrpt::maps::COccupancyGridMap2D& map, const ClutterParams& p,
                                            Rng& rng) {
   mrpt::maps::COccupancyGridMap2D out = map;
-  const cv::Mat free = freeMask(map);
-  cv::Mat dist;
-  cv::distanceTransform(free, dist, cv::DIST_L2, cv::DIST_MASK_5);
-  dist *= map.getResolution();
+  const cv::Mat dist = freeClearanceM(map);
   std::vector<cv::Point> candidates;
   cv::findNonZero(dist > p.placement_clearance_m, candidates);
   if (candidates.empty()) return out;
-  const double free_m2 = cv::countNonZero(free) * map.getResolution() * map.getResolution();
+  const double free_m2 = freeAreaM2(map);
   auto count = [&](double per100) { return static_cast<int>(std::lround(per100 * free_m2 / 100.0)); };
   auto pick = [&]() {
     const auto& px = candidates[static_cast<size_t>(rng.uniformInt(0, static_cast<int>(candidates.size()) - 1))];

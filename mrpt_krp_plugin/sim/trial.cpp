@@ -13,10 +13,7 @@ namespace {
 // Clearance lookup on the simulation map (clutter included).
 class ClearanceMap {
  public:
-  explicit ClearanceMap(const mrpt::maps::COccupancyGridMap2D& g) : grid_(g) {
-    cv::distanceTransform(freeMask(g), dist_, cv::DIST_L2, cv::DIST_MASK_5);
-    dist_ *= g.getResolution();
-  }
+  explicit ClearanceMap(const mrpt::maps::COccupancyGridMap2D& g) : grid_(g), dist_(freeClearanceM(g)) {}
   double at(double x, double y) const {
     const cv::Point px = worldToPixel(grid_, {x, y});
     if (px.x < 0 || px.y < 0 || px.x >= dist_.cols || px.y >= dist_.rows) return 0.0;

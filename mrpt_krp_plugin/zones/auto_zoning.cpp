@@ -64,16 +64,18 @@ std::vector<cv::Point> outerContour(const cv::Mat& mask) {
                            [](const auto& a, const auto& b) { return cv::contourArea(a) < cv::contourArea(b); });
 }
 
-// True if the region's outer outline also encloses free cells of other regions (a ring).
-bool enclosesOthers(const cv::Mat& labels, int label) {
-  const cv::Mat mask = labels == label;
-  const auto contour = outerContour(mask);
-  if (contour.size() < 3) return false;
+// Cells of other regions inside the region's outer outline (a ring's hole, or a neighbour
+// reaching diagonally across the outline); empty if there are none.
+cv::Mat othersInsideOutline(const cv::Mat& labels, int label) {
+  const auto contour = outerContour(labels == label);
+  if (contour.size() < 3) return cv::Mat::zeros(labels.size(), CV_8U);
   cv::Mat filled = cv::Mat::zeros(labels.size(), CV_8U);
   cv::fillPoly(filled, std::vector<std::vector<cv::Point>>{contour}, cv::Scalar(255));
-  const cv::Mat others = (labels >= 0) & (labels != label) & filled;
-  return cv::countNonZero(others) > 0;
+  return (labels >= 0) & (labels != label) & filled;
 }
+
+// True if the region's outer outline also encloses cells of other regions (a ring).
+bool enclosesOthers(const cv::Mat& labels, int label) { return cv::countNonZero(othersInsideOutline(labels, label)) > 0; }
 
 void splitRegion(cv::Mat& labels, int label, int parts, int new_label_base, uint64_t seed) {
   std::vector<cv::Point> pts;
@@ -153,11 +155,7 @@ int absorbEnclosed(cv::Mat& labels, int n, int max_rounds) {
   for (int round = 0; round < max_rounds; ++round) {
     bool changed = false;
     for (int l = 0; l < n; ++l) {
-      const auto contour = outerContour(labels == l);
-      if (contour.size() < 3) continue;
-      cv::Mat filled = cv::Mat::zeros(labels.size(), CV_8U);
-      cv::fillPoly(filled, std::vector<std::vector<cv::Point>>{contour}, cv::Scalar(255));
-      const cv::Mat others = (labels >= 0) & (labels != l) & filled;
+      const cv::Mat others = othersInsideOutline(labels, l);
       if (cv::countNonZero(others) == 0) continue;
       labels.setTo(l, others);
       changed = true;

@@ -100,10 +100,10 @@ std::vector<ZoneLandmarks> extractLandmarks(const mrpt::maps::COccupancyGridMap2
                                                            " m of its free space to take landmarks from");
     const auto corners = strongestCorners(corner_measure, search, quality_floor, p.min_spacing_m / res,
                                           k * static_cast<size_t>(p.candidates_per_landmark));
-    std::vector<cv::Point> wall_cells;
-    cv::findNonZero(search, wall_cells);
     auto chosen = farthestPoints(corners, k);
     if (chosen.size() < k) {
+      std::vector<cv::Point> wall_cells;
+      cv::findNonZero(search, wall_cells);
       std::vector<cv::Point2f> fallback;
       for (const auto& w : wall_cells) fallback.emplace_back(static_cast<float>(w.x), static_cast<float>(w.y));
       chosen = farthestPoints(fallback, k, chosen);
