@@ -20,7 +20,8 @@ void DatasetPreview::add(size_t zone, const cv::Mat& occupancy, const cv::Mat& s
   cv::resize(sdt, sdt_big, cv::Size(), scale_, scale_, cv::INTER_NEAREST);
   for (size_t i = 0; i < kps.size(); ++i) {
     if (kps[i].visibility == KeypointVisibility::kOutside) continue;
-    const cv::Point c(static_cast<int>((kps[i].px.x + 0.5) * scale_), static_cast<int>((kps[i].px.y + 0.5) * scale_));
+    const cv::Point c(static_cast<int>((kps[i].px.x + kPixelCentreOffset) * scale_),
+                      static_cast<int>((kps[i].px.y + kPixelCentreOffset) * scale_));
     const auto colour = kps[i].visibility == KeypointVisibility::kObserved ? kObservedBgr : kNotObservedBgr;
     cv::circle(sdt_big, c, 3 * scale_, colour, 2);
     cv::putText(sdt_big, std::to_string(i), c + cv::Point(4 * scale_, 0), cv::FONT_HERSHEY_SIMPLEX, 0.3 * scale_, colour, 1);

@@ -17,8 +17,8 @@ std::vector<Keypoint> projectLandmarks(const ZoneLandmarks& landmarks, const mrp
     robot_pose.inverseComposePoint(lm.x, lm.y, lx, ly);
     Keypoint k;
     k.px = grid.robotToPixel({lx, ly});
-    // Pixel centres are at integers, so a pixel covers [c - 0.5, c + 0.5).
-    const bool inside = k.px.x >= -0.5 && k.px.y >= -0.5 && k.px.x < n - 0.5 && k.px.y < n - 0.5;
+    const double lo = -kPixelCentreOffset, hi = n - kPixelCentreOffset;
+    const bool inside = k.px.x >= lo && k.px.y >= lo && k.px.x < hi && k.px.y < hi;
     if (inside) {
       k.visibility = KeypointVisibility::kInsideNotObserved;
       const int cx = static_cast<int>(std::lround(k.px.x)), cy = static_cast<int>(std::lround(k.px.y));
@@ -41,17 +41,16 @@ std::optional<std::string> yoloPoseLabel(int class_id, const std::vector<Keypoin
     x0 = std::min(x0, k.px.x), y0 = std::min(y0, k.px.y), x1 = std::max(x1, k.px.x), y1 = std::max(y1, k.px.y);
   }
   if (!any) return std::nullopt;
-  // Image edges are at -0.5 and size - 0.5 in pixel-centre coordinates.
-  const double lo = -0.5, hi = image_size_px - 0.5, s = image_size_px;
+  const double lo = -kPixelCentreOffset, hi = image_size_px - kPixelCentreOffset, s = image_size_px;
   x0 = std::clamp(x0 - params.box_margin_px, lo, hi), y0 = std::clamp(y0 - params.box_margin_px, lo, hi);
   x1 = std::clamp(x1 + params.box_margin_px, lo, hi), y1 = std::clamp(y1 + params.box_margin_px, lo, hi);
   std::ostringstream o;
   o.precision(6);
-  o << std::fixed << class_id << " " << ((x0 + x1) / 2 + 0.5) / s << " " << ((y0 + y1) / 2 + 0.5) / s << " "
+  o << std::fixed << class_id << " " << ((x0 + x1) / 2 + kPixelCentreOffset) / s << " " << ((y0 + y1) / 2 + kPixelCentreOffset) / s << " "
     << (x1 - x0) / s << " " << (y1 - y0) / s;
   for (const auto& k : keypoints) {
     if (k.visibility == KeypointVisibility::kOutside) o << " 0 0 0";
-    else o << " " << (k.px.x + 0.5) / s << " " << (k.px.y + 0.5) / s << " " << static_cast<int>(k.visibility);
+    else o << " " << (k.px.x + kPixelCentreOffset) / s << " " << (k.px.y + kPixelCentreOffset) / s << " " << static_cast<int>(k.visibility);
   }
   return o.str();
 }

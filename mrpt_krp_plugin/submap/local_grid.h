@@ -6,6 +6,11 @@
 
 namespace krp {
 
+/// Pixel coordinates here put pixel centres at integers; continuous image coordinates (what
+/// YOLO labels and drawing use) put the image's edges at 0 and size. The one offset between them:
+/// continuous = pixel-centre + kPixelCentreOffset, and a pixel covers [c - offset, c + offset).
+constexpr double kPixelCentreOffset = 0.5;
+
 /// What a submap cell is known to be.
 enum class CellState : uint8_t { kUnknown = 0, kFree = 1, kOccupied = 2 };
 
