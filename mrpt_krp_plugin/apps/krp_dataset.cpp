@@ -1,17 +1,23 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // krp-dataset: simulated training data for the zone classifier and the keypoint model.
+#include <filesystem>
 #include <iostream>
 
 #include "cli_args.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/dataset/dataset_generator.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
+#include "mrpt_krp_plugin/sim/lidar_profile.h"
 #include "mrpt_krp_plugin/sim/world.h"
+#include "mrpt_krp_plugin/zones/auto_zoning.h"
 #include "mrpt_krp_plugin/zones/landmarks_yaml.h"
 #include "mrpt_krp_plugin/zones/zone_validation.h"
 #include "mrpt_krp_plugin/zones/zones_yaml.h"
 
 using krp::apps::CliArgs;
+
+// The 360 deg, 12 m profile: what the shipped models and the benchmarks use.
+static const char* const kMapDefaultLidar = "omni_12m";
 
 static int run(int argc, char** argv) {
   CliArgs args("krp-dataset",
@@ -21,7 +27,10 @@ static int run(int argc, char** argv) {
                "dataset card.",
                {{"world", "NAME|FILE", "world name under --world-dir, or a *.world.yaml", "office_two_zone"},
                 {"world-dir", "DIR", "folder of the worlds", "sim_worlds"},
-                {"lidar", "NAME", "lidar profile (default: the world's default)", ""},
+                {"map", "FILE", "a map instead of a world (.yaml, .gridmap[.gz], .bt/.ot), default clutter", ""},
+                {"zones", "FILE", "zones.yaml for --map (default: automatic zoning)", ""},
+                {"target-area", "M2", "automatic zoning for --map: target zone area", "80"},
+                {"lidar", "NAME", "lidar profile (default: the world's default; omni_12m for --map)", ""},
                 {"out", "DIR", "dataset folder (must not exist)", "out/dataset"},
                 {"samples-per-zone", "N", "train+val+test poses per zone", "400"},
                 {"changed-per-zone", "N", "changed-environment poses per zone", "60"},
@@ -34,13 +43,29 @@ static int run(int argc, char** argv) {
                 {"block-m", "M", "floor block side for the split", "2"},
                 {"seed", "N", "seed (printed; the dataset is reproducible from it)", "1"}});
   if (!args.parse(argc, argv)) return 0;
-  const krp::World world = krp::readWorld(krp::apps::worldFilePath(args.get("world"), args.get("world-dir")));
+  krp::World world;
+  if (args.has("map")) {
+    // A user's own map: no world file, so the built-in profiles and default clutter apply.
+    world.name = std::filesystem::path(args.get("map")).stem().string();
+    world.map_path = args.get("map");
+    world.zones_path = args.get("zones");
+    world.default_lidar_profile = kMapDefaultLidar;
+  } else {
+    world = krp::readWorld(krp::apps::worldFilePath(args.get("world"), args.get("world-dir")));
+  }
   const auto map = krp::loadOccupancyMap(world.map_path);
   krp::DatasetInputs in;
   in.world_name = world.name;
   in.map = map.grid.get();
-  in.zones = krp::readZonesYaml(world.zones_path);
-  krp::validateZones(*map.grid, in.zones, world.zones_path);
+  if (!world.zones_path.empty()) {
+    in.zones = krp::readZonesYaml(world.zones_path);
+    krp::validateZones(*map.grid, in.zones, world.zones_path);
+  } else {
+    krp::AutoZoningParams zp;
+    zp.target_area_m2 = args.number("target-area");
+    in.zones = krp::autoZone(*map.grid, zp);
+    krp::validateZones(*map.grid, in.zones, "automatic zoning of " + world.map_path);
+  }
   in.landmark_params.keypoints_per_zone = static_cast<int>(args.integer("keypoints"));
   if (args.has("landmarks")) {
     in.landmarks = krp::readLandmarksYaml(args.get("landmarks"));
@@ -52,7 +77,8 @@ static int run(int argc, char** argv) {
     in.landmarks = krp::extractLandmarks(*map.grid, in.zones, in.landmark_params);
   }
   in.clutter = world.clutter;
-  in.lidar = world.lidar(args.has("lidar") ? args.get("lidar") : world.default_lidar_profile);
+  const std::string lidar_name = args.has("lidar") ? args.get("lidar") : world.default_lidar_profile;
+  in.lidar = args.has("map") ? krp::lidarProfileByName(lidar_name) : world.lidar(lidar_name);
 
   krp::DatasetParams p;
   p.samples_per_zone = static_cast<int>(args.integer("samples-per-zone"));

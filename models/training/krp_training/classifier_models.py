@@ -1,0 +1,76 @@
+"""Zone classifier architectures: a compact CNN (the shipped default) and the thesis's torchvision ones.
+
+Every model takes the occupancy image as one channel, 1 x H x W, values normalized by
+`normalize` below; the torchvision networks get the channel repeated to three inside the model,
+so the exported ONNX has the same single-channel input whatever the architecture.
+All torchvision networks are built with weights=None: nothing is downloaded.
+"""
+import torch
+from torch import nn
+import torchvision
+
+ARCHITECTURES = ("compact", "googlenet", "vgg16", "vgg19", "densenet121")
+
+# Occupancy image grey levels are 0 (occupied), 128 (unknown), 255 (free): centre them on 0.
+INPUT_MEAN = 0.5
+INPUT_STD = 0.5
+
+
+def normalize(grey_uint8: torch.Tensor) -> torch.Tensor:
+    return (grey_uint8.float() / 255.0 - INPUT_MEAN) / INPUT_STD
+
+
+class CompactNet(nn.Module):
+    """Four conv blocks and a global-pool head: about 0.1 M parameters, ~1 ms on one CPU thread."""
+
+    def __init__(self, num_classes: int, width: int = 24, dropout: float = 0.3):
+        super().__init__()
+        chans = [1, width, 2 * width, 4 * width, 8 * width]
+        blocks = []
+        for cin, cout in zip(chans[:-1], chans[1:]):
+            blocks += [nn.Conv2d(cin, cout, 3, padding=1, bias=False), nn.BatchNorm2d(cout), nn.ReLU(inplace=True),
+                       nn.Conv2d(cout, cout, 3, padding=1, bias=False), nn.BatchNorm2d(cout), nn.ReLU(inplace=True),
+                       nn.MaxPool2d(2)]
+        self.features = nn.Sequential(*blocks)
+        self.head = nn.Sequential(nn.AdaptiveAvgPool2d(1), nn.Flatten(), nn.Dropout(dropout),
+                                  nn.Linear(chans[-1], num_classes))
+
+    def forward(self, x):
+        return self.head(self.features(x))
+
+
+class GreyToRgb(nn.Module):
+    """Repeats the single input channel so that a three-channel torchvision network accepts it."""
+
+    def __init__(self, net: nn.Module):
+        super().__init__()
+        self.net = net
+
+    def forward(self, x):
+        return self.net(x.expand(-1, 3, -1, -1))
+
+
+def _vgg(builder, num_classes: int, dropout: float) -> nn.Module:
+    net = builder(weights=None)
+    # A global-pool head: the 7x7 adaptive pool of the ImageNet head does not export at 160 px,
+    # and 100 M head parameters would only memorize a few hundred submaps.
+    net.avgpool = nn.AdaptiveAvgPool2d(1)
+    net.classifier = nn.Sequential(nn.Flatten(), nn.Dropout(dropout), nn.Linear(512, num_classes))
+    return GreyToRgb(net)
+
+
+def build(architecture: str, num_classes: int, dropout: float = 0.3) -> nn.Module:
+    if architecture == "compact":
+        return CompactNet(num_classes, dropout=dropout)
+    if architecture == "googlenet":
+        net = torchvision.models.googlenet(weights=None, aux_logits=False, init_weights=True,
+                                           num_classes=num_classes, dropout=dropout)
+        return GreyToRgb(net)
+    if architecture == "vgg16":
+        return _vgg(torchvision.models.vgg16, num_classes, dropout)
+    if architecture == "vgg19":
+        return _vgg(torchvision.models.vgg19, num_classes, dropout)
+    if architecture == "densenet121":
+        net = torchvision.models.densenet121(weights=None, num_classes=num_classes, drop_rate=dropout)
+        return GreyToRgb(net)
+    raise ValueError(f"unknown architecture '{architecture}'; choose one of {', '.join(ARCHITECTURES)}")

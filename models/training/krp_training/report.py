@@ -1,0 +1,132 @@
+"""REPORT.md of a model folder, assembled from manifest.json and the optional side results.
+
+Side results are written by their own committed commands and carry that command:
+  comparison.json  architectures with/without scenario generation, leave-one-zone-out (krp_training.compare)
+  latency.json     C++ onnxruntime latency of the exported files (krp-model-latency)
+A side result that measured other model files than the ones in the folder is not shown as theirs.
+"""
+import json
+import shutil
+from pathlib import Path
+
+SIDE_RESULTS = ("comparison.json", "latency.json")
+
+
+def _pct(x):
+    return "n/a" if x is None or x != x else f"{100 * x:.1f} %"
+
+
+def _f(x, digits=3):
+    return "n/a" if x is None or x != x else f"{x:.{digits}f}"
+
+
+def _classifier_section(m):
+    c = m["classifier"]["metrics"]
+    zones = m["zones"]
+    lines = ["## Zone classifier (shipped: `zone_classifier.onnx`, " + c["architecture"] + ")", "",
+             "| split | images | accuracy |", "|---|---|---|"]
+    for s in ("val", "test", "changed"):
+        lines.append(f"| {s} | {c['images'][s]} | {_pct(c['accuracy'][s])} |")
+    lines += ["", f"Best validation epoch {c['best_epoch']}; training took {c['train_seconds']:.0f} s.", "",
+              "Confusion matrix, test split (rows: true zone, columns: predicted):", "",
+              "| | " + " | ".join(zones) + " |", "|---" * (len(zones) + 1) + "|"]
+    for name, row in zip(zones, c["confusion"]["test"]):
+        lines.append(f"| **{name}** | " + " | ".join(str(v) for v in row) + " |")
+    lines += ["", "![classifier curves](figures/classifier_curves.png) ![confusion, test](figures/confusion_test.png)"
+              " ![confusion, changed](figures/confusion_changed.png)", ""]
+    return lines
+
+
+def _keypoint_section(m):
+    k = m["keypoints"]["metrics"]
+    lines = ["## Keypoint model (shipped: `keypoints.onnx`, YOLOv8n-pose; Table 4.3's analogue)", "",
+             "Measured on the exported ONNX file with ultralytics' validator.", "",
+             "| split | box P | box R | box mAP50 | box mAP50-95 | pose P | pose R | pose mAP50 | pose mAP50-95 |"
+             " mean kpt error | median | observed kpts |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for s in ("test", "changed"):
+        b, p, e = k[s]["box"], k[s]["pose"], k[s]["keypoint_error"]
+        lines.append(f"| {s} | {_f(b['precision'])} | {_f(b['recall'])} | {_f(b['map50'])} | {_f(b['map50_95'])} | "
+                     f"{_f(p['precision'])} | {_f(p['recall'])} | {_f(p['map50'])} | {_f(p['map50_95'])} | "
+                     f"{_f(e['mean_error_m'])} m | {_f(e['median_error_m'])} m | {e['observed_keypoints']} |")
+    lines += ["", "Keypoint error: distance between predicted and true image position of every keypoint labelled "
+              "observed (visibility 2), in metres, on images whose top detection names the right zone "
+              f"(test: {k['test']['keypoint_error']['right_zone']} of {k['test']['keypoint_error']['images']}; "
+              f"changed: {k['changed']['keypoint_error']['right_zone']} of "
+              f"{k['changed']['keypoint_error']['images']}).", "",
+              f"Training: {k['epochs']} epochs, {k['train_seconds']:.0f} s.", "",
+              "![keypoint curves](figures/keypoint_curves.png)", ""]
+    return lines
+
+
+def _latency_section(folder: Path, m, name: str):
+    path = folder / "latency.json"
+    if not path.exists():
+        return ["## Inference latency", "", "Not measured yet: run `scripts/measure_model_latency.sh "
+                f"{name}`.", ""]
+    lat = json.loads(path.read_text())
+    current = {m["classifier"]["file"]: m["classifier"]["sha256"], m["keypoints"]["file"]: m["keypoints"]["sha256"]}
+    lines = ["## Inference latency (C++ onnxruntime, one thread)", "", f"Command: `{lat['command']}`", "",
+             "| model | runs | median | p90 |", "|---|---|---|---|"]
+    for r in lat["models"]:
+        if current.get(r["file"]) != r["sha256"]:
+            lines.append(f"| {r['file']} | stale: measured another file; re-run the command | | |")
+        else:
+            lines.append(f"| {r['file']} | {r['runs']} | {r['median_ms']:.2f} ms | {r['p90_ms']:.2f} ms |")
+    return lines + [""]
+
+
+def _comparison_section(folder: Path):
+    path = folder / "comparison.json"
+    if not path.exists():
+        return ["## Architecture comparison (Table 4.2's analogue)", "",
+                "Not run yet: `scripts/compare_classifiers.sh <world>`.", ""]
+    c = json.loads(path.read_text())
+    lines = ["## Architecture comparison (Table 4.2's analogue)", "", f"Command: `{c['command']}`", "",
+             c.get("note", ""), "",
+             "| architecture | scenario generation | val acc | test acc | changed acc | epochs | train s |",
+             "|---|---|---|---|---|---|---|"]
+    for r in c["runs"]:
+        lines.append(f"| {r['architecture']} | {'with' if r['strength'] > 0 else 'without'} | {_pct(r['val'])} | "
+                     f"{_pct(r['test'])} | {_pct(r['changed'])} | {r['epochs']} | {r['seconds']:.0f} |")
+    if c.get("ratios"):
+        lines += ["", "Ratio with / without scenario generation (changed-split accuracy):", "",
+                  "| architecture | ratio |", "|---|---|"]
+        for arch, ratio in c["ratios"].items():
+            lines.append(f"| {arch} | {_f(ratio, 2)} |")
+    if c.get("leave_one_zone_out"):
+        lz = c["leave_one_zone_out"]
+        lines += ["", "### Leave-one-zone-out check", "", lz["what"], "",
+                  "| trained on | evaluated on | mean max probability | predicted the trained zone |",
+                  "|---|---|---|---|"]
+        for r in lz["rows"]:
+            lines.append(f"| {r['trained_on']} | {r['evaluated_on']} | {_f(r['mean_max_probability'])} | "
+                         f"{_pct(r['predicted_trained_zone'])} |")
+        lines += ["", lz["finding"]]
+    return lines + [""]
+
+
+def write(folder: Path, m: dict, previous: Path = None, name: str = None) -> None:
+    folder = Path(folder)
+    if previous is not None and Path(previous).is_dir():
+        for name in SIDE_RESULTS:  # kept; stale ones are marked by the hash check above
+            if (Path(previous) / name).exists() and not (folder / name).exists():
+                shutil.copyfile(Path(previous) / name, folder / name)
+    t = m["training"]
+    stages = ", ".join(f"{k} {v:.0f} s" for k, v in t.get("stage_seconds", {}).items())
+    lines = [f"# Models for `{m['world']}`", "",
+             f"Made by: `{t['command']}` on {t['device']} (torch {t['torch']}); stages: {stages}.", "",
+             f"Lidar `{m['lidar']['name']}` ({m['lidar']['fov_deg']:.0f} deg, {m['lidar']['max_range_m']} m); "
+             f"submap {m['submap']['size_m']} m / {m['submap']['size_px']} px ({m['submap']['resolution_m']} m/px); "
+             f"{len(m['zones'])} zones; {m['landmarks']['keypoints_per_zone']} landmarks per zone "
+             f"({m['landmarks']['method']}).", "",
+             f"Dataset: seed {m['dataset']['seed']}, card sha256 `{m['dataset']['card_sha256'][:16]}…` "
+             "(see DATASET_CARD.md); splits by 2 m floor block, so no location is in two splits. "
+             "`changed` is a separate split with three times the clutter and occlusion and a third of the "
+             "furniture moved.", "",
+             "`keypoints.onnx` is exported by ultralytics and carries its AGPL-3.0 licence in its metadata "
+             "(see models/training/LICENSE).", ""]
+    lines += _classifier_section(m) + _keypoint_section(m) + _latency_section(folder, m, name or folder.name) + _comparison_section(folder)
+    tmp = folder / "REPORT.md.partial"
+    tmp.write_text("\n".join(lines) + "\n")
+    tmp.replace(folder / "REPORT.md")

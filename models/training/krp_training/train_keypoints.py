@@ -1,0 +1,90 @@
+"""Trains the YOLOv8-pose keypoint model on krp-dataset's SDT images, fully offline.
+
+Augmentations that would break the image's meaning are off: colour shifts (the seismic colours
+encode distance), scaling (pixels have a fixed metric size) and mirroring (it would swap landmarks
+in a way no robot sees). Rotation and shifts stay on: they are other headings and positions.
+"""
+import shutil
+import time
+from dataclasses import dataclass, asdict
+from pathlib import Path
+
+import torch
+import yaml
+
+from . import offline
+
+
+@dataclass
+class KeypointParams:
+    model_yaml: str = "yolov8n-pose.yaml"  # built from its yaml, never a .pt (which would be downloaded)
+    epochs: int = 60
+    batch_size: int = 32
+    patience: int = 30
+    rotation_deg: float = 180.0
+    translate: float = 0.05
+    mosaic: float = 0.0  # one zone per submap: a 4-image mosaic is a scene that cannot occur
+    seed: int = 1
+    device: str = "cpu"
+    workers: int = 2
+    threads: int = 2  # ultralytics sets 1 torch thread on a 2-core machine; this restores the cores
+
+
+@dataclass
+class KeypointResult:
+    weights: Path
+    run_dir: Path
+    seconds: float
+    params: dict
+
+
+def _set_threads(threads: int):
+    def callback(_trainer):
+        torch.set_num_threads(threads)
+
+    return callback
+
+
+def train(data_yaml: Path, work_dir: Path, params: KeypointParams, imgsz: int) -> KeypointResult:
+    offline.configure(work_dir / "ultralytics-config")
+    from ultralytics import YOLO  # after offline.configure: ultralytics reads the environment on import
+
+    model = YOLO(params.model_yaml, task="pose")
+    model.add_callback("on_pretrain_routine_start", _set_threads(params.threads))
+    run_dir = Path(work_dir) / "yolo"
+    if run_dir.exists():
+        shutil.rmtree(run_dir)
+    start = time.perf_counter()
+    model.train(data=str(Path(data_yaml).resolve()), epochs=params.epochs, imgsz=imgsz, batch=params.batch_size,
+                patience=params.patience, device=params.device, workers=params.workers, seed=params.seed,
+                deterministic=True, pretrained=False, amp=False, plots=True, project=str(Path(work_dir).resolve()),
+                name="yolo", exist_ok=True, verbose=False,
+                degrees=params.rotation_deg, translate=params.translate, scale=0.0, shear=0.0, perspective=0.0,
+                fliplr=0.0, flipud=0.0, mosaic=params.mosaic, mixup=0.0, hsv_h=0.0, hsv_s=0.0, hsv_v=0.0,
+                close_mosaic=0)
+    weights = run_dir / "weights" / "best.pt"
+    if not weights.exists():
+        raise RuntimeError(f"ultralytics finished without {weights}")
+    return KeypointResult(weights, run_dir, time.perf_counter() - start, asdict(params))
+
+
+def evaluate(weights_or_onnx: Path, keypoints_dir: Path, split: str, imgsz: int, work_dir: Path) -> dict:
+    """Box and pose precision, recall, mAP@50, mAP@50-95 on one split of krp-dataset's keypoints folder."""
+    offline.configure(work_dir / "ultralytics-config")
+    from ultralytics import YOLO
+
+    # ultralytics validates only its own split names, so the split under evaluation is named 'test'.
+    doc = yaml.safe_load((Path(keypoints_dir) / "data.yaml").read_text())
+    doc.update({"path": str(Path(keypoints_dir).resolve()), "test": f"images/{split}"})
+    eval_yaml = Path(work_dir) / f"eval-{split}.yaml"
+    eval_yaml.write_text(yaml.safe_dump(doc))
+    model = YOLO(str(weights_or_onnx), task="pose")
+    m = model.val(data=str(eval_yaml.resolve()), split="test", imgsz=imgsz, batch=16, device="cpu",
+                  plots=False, verbose=False, project=str(Path(work_dir).resolve()), name=f"val-{split}",
+                  exist_ok=True)
+    return {
+        "box": {"precision": float(m.box.mp), "recall": float(m.box.mr), "map50": float(m.box.map50),
+                "map50_95": float(m.box.map)},
+        "pose": {"precision": float(m.pose.mp), "recall": float(m.pose.mr), "map50": float(m.pose.map50),
+                 "map50_95": float(m.pose.map)},
+    }

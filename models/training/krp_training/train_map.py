@@ -1,0 +1,206 @@
+"""krp-train-map: one command from a map (or a sim world) to exported, documented models.
+
+map/world -> krp-dataset (the C++ code the robot runs renders every image) -> zone classifier ->
+YOLOv8-pose keypoint model -> ONNX + manifest.json + metrics.json + REPORT.md in --out.
+The output folder is written as <out>.partial and renamed at the end, so an interrupted run
+never leaves a half-written model folder where a robot would look for one.
+"""
+import argparse
+import json
+import shlex
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import torch
+import yaml
+
+from . import classifier_models, export, keypoint_error, manifest, plots, report, train_classifier, train_keypoints
+from .image_folders import SPLITS, read_split
+from .stage_timer import StageTimer
+
+REPO_ROOT = Path(__file__).resolve().parents[3]
+DEFAULT_BIN_DIR = REPO_ROOT / "build" / "mrpt_krp_plugin" / "apps"
+
+# Measured on 2 CPU cores (shared/notes/dependencies.md and our runs), to give a first time estimate
+# before the progress bars take over with their own.
+SECONDS_PER_IMAGE_EPOCH = {"compact": 0.012, "yolo": 0.03}
+DATASET_SECONDS_PER_IMAGE = 0.008
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(prog="krp-train-map", description=__doc__.splitlines()[0],
+                                formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+    src = p.add_mutually_exclusive_group(required=True)
+    src.add_argument("--world", help="a sim world name under sim_worlds/ or a *.world.yaml")
+    src.add_argument("--map", help="a map file (ROS map .yaml, .gridmap, OctoMap .bt/.ot)")
+    p.add_argument("--zones", help="zones.yaml for --map (default: automatic zoning)")
+    p.add_argument("--lidar", help="lidar profile (default: the world's default; omni_12m for --map)")
+    p.add_argument("--out", required=True, help="model folder to write (replaced at the end if it exists)")
+    p.add_argument("--work-dir", help="dataset and training runs (default: out/train/<name>)")
+    p.add_argument("--samples-per-zone", type=int, default=400)
+    p.add_argument("--changed-per-zone", type=int, default=60)
+    p.add_argument("--strength", type=float, default=1.0, help="scenario generation strength (0 = off)")
+    p.add_argument("--classifier", default="compact", choices=classifier_models.ARCHITECTURES)
+    p.add_argument("--classifier-epochs", type=int, default=30)
+    p.add_argument("--keypoint-epochs", type=int, default=60)
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--device", default="auto", help="auto (GPU when there is one), cpu or cuda")
+    p.add_argument("--bin-dir", default=str(DEFAULT_BIN_DIR), help="where the built C++ apps are")
+    p.add_argument("--keep-work", action="store_true", help="keep the dataset and runs after success")
+    return p.parse_args(argv)
+
+
+def _run(cmd):
+    print("[krp-train-map] $ " + " ".join(shlex.quote(str(c)) for c in cmd), file=sys.stderr, flush=True)
+    subprocess.run([str(c) for c in cmd], check=True)
+
+
+def _app(bin_dir: Path, name: str) -> Path:
+    exe = Path(bin_dir) / name
+    if not exe.exists():
+        raise SystemExit(f"krp-train-map: {exe} not found; build the C++ apps first (scripts/build.sh) "
+                         "or pass --bin-dir")
+    return exe
+
+
+def _dataset_command(args, bin_dir: Path, dataset_dir: Path) -> list:
+    cmd = [_app(bin_dir, "krp-dataset"), "--out", dataset_dir, "--samples-per-zone", args.samples_per_zone,
+           "--changed-per-zone", args.changed_per_zone, "--strength", args.strength, "--seed", args.seed]
+    if args.world:
+        cmd += ["--world", args.world, "--world-dir", REPO_ROOT / "sim_worlds"]
+    else:
+        cmd += ["--map", args.map] + (["--zones", args.zones] if args.zones else [])
+    if args.lidar:
+        cmd += ["--lidar", args.lidar]
+    return cmd
+
+
+def _device(choice: str) -> str:
+    if choice == "auto":
+        return "cuda" if torch.cuda.is_available() else "cpu"
+    if choice == "cuda" and not torch.cuda.is_available():
+        raise SystemExit("krp-train-map: --device cuda but torch sees no GPU")
+    return choice
+
+
+def _map_path(args, card_dir: Path) -> Path:
+    if args.map:
+        return Path(args.map)
+    world_file = Path(args.world) if args.world.endswith(".yaml") else \
+        REPO_ROOT / "sim_worlds" / args.world / f"{args.world}.world.yaml"
+    return world_file.parent / yaml.safe_load(world_file.read_text())["map"]
+
+
+def main(argv=None) -> int:
+    args = parse_args(argv)
+    command = "krp-train-map " + " ".join(shlex.quote(a) for a in (argv if argv is not None else sys.argv[1:]))
+    device = _device(args.device)
+    name = args.world or Path(args.map).stem
+    out = Path(args.out)
+    work = Path(args.work_dir or REPO_ROOT / "out" / "train" / Path(name).stem)
+    if work.exists():
+        shutil.rmtree(work)
+    work.mkdir(parents=True)
+    partial = Path(str(out) + ".partial")
+    if partial.exists():
+        shutil.rmtree(partial)
+    (partial / "figures").mkdir(parents=True)
+    timer = StageTimer()
+    dataset_dir = work / "dataset"
+    print(f"[krp-train-map] {name}: device {device}, work dir {work}, output {out}", file=sys.stderr)
+
+    n_zones_guess = None
+    with timer.stage("dataset"):
+        _run(_dataset_command(args, Path(args.bin_dir), dataset_dir))
+    card_path = dataset_dir / "dataset_card.json"
+    card = json.loads(card_path.read_text())
+    zones = card["zones"]
+    n_zones_guess = len(zones)
+    sets = {s: read_split(dataset_dir, s, zones) for s in SPLITS}
+    n_train = len(sets["train"])
+    print(f"[krp-train-map] {len(zones)} zones; images: " + ", ".join(f"{s} {len(v)}" for s, v in sets.items()),
+          file=sys.stderr)
+
+    cp = train_classifier.ClassifierParams(architecture=args.classifier, epochs=args.classifier_epochs,
+                                           seed=args.seed, device=device)
+    est = n_train * cp.epochs * SECONDS_PER_IMAGE_EPOCH["compact"] if device == "cpu" else None
+    with timer.stage("classifier", est):
+        cls = train_classifier.train(sets["train"], sets["val"], n_zones_guess, cp)
+    cls_metrics = {
+        "architecture": args.classifier, "best_epoch": cls.best_epoch, "train_seconds": cls.seconds,
+        "accuracy": {s: train_classifier.accuracy(cls.model, sets[s], device) for s in ("val", "test", "changed")},
+        "confusion": {s: train_classifier.confusion_matrix(cls.model, sets[s], len(zones), device)
+                      for s in ("test", "changed")},
+        "images": {s: len(sets[s]) for s in SPLITS},
+    }
+    plots.classifier_curves(cls.history, f"{name}: zone classifier ({args.classifier})",
+                            partial / "figures" / "classifier_curves.png")
+    for s in ("test", "changed"):
+        plots.confusion(cls_metrics["confusion"][s], zones, f"{name}: classifier, {s} split",
+                        partial / "figures" / f"confusion_{s}.png")
+
+    kp = train_keypoints.KeypointParams(epochs=args.keypoint_epochs, seed=args.seed,
+                                        device="0" if device == "cuda" else "cpu")
+    img_px = int(card["submap"]["size_px"])
+    est = n_train * kp.epochs * SECONDS_PER_IMAGE_EPOCH["yolo"] if device == "cpu" else None
+    with timer.stage("keypoints", est):
+        kpr = train_keypoints.train(dataset_dir / "keypoints" / "data.yaml", work, kp, img_px)
+    if (kpr.run_dir / "results.csv").exists():
+        plots.keypoint_curves(kpr.run_dir / "results.csv", f"{name}: keypoint model (YOLOv8n-pose)",
+                              partial / "figures" / "keypoint_curves.png")
+
+    with timer.stage("export"):
+        cls_onnx = export.export_classifier(cls.model, img_px, partial / "zone_classifier.onnx")
+        kp_onnx = export.export_keypoints(kpr.weights, img_px, partial / "keypoints.onnx", work)
+
+    with timer.stage("evaluate"):
+        kp_metrics = {"train_seconds": kpr.seconds, "epochs": kp.epochs}
+        for s in ("test", "changed"):
+            kp_metrics[s] = train_keypoints.evaluate(partial / "keypoints.onnx", dataset_dir / "keypoints", s,
+                                                     img_px, work)
+            kp_metrics[s]["keypoint_error"] = keypoint_error.mean_keypoint_error(
+                partial / "keypoints.onnx", dataset_dir, s, img_px, card["submap"]["resolution_m"],
+                int(card["landmarks"]["keypoints_per_zone"]), work)
+
+    landmarks = manifest.read_landmarks(dataset_dir / "landmarks.yaml")
+    training = {"command": command, "device": device, "torch": torch.__version__,
+                "stage_seconds": dict(timer.seconds), "classifier_params": cls.params,
+                "keypoint_params": kpr.params}
+    m = manifest.build(card, export.sha256(card_path), _map_path(args, dataset_dir), landmarks,
+                       {"file": "zone_classifier.onnx", "sha256": export.sha256(partial / "zone_classifier.onnx"),
+                        "architecture": args.classifier, **cls_onnx, "metrics": cls_metrics},
+                       {"file": "keypoints.onnx", "sha256": export.sha256(partial / "keypoints.onnx"),
+                        "architecture": "yolov8n-pose", **kp_onnx, "metrics": kp_metrics},
+                       training)
+    shutil.copyfile(dataset_dir / "DATASET_CARD.md", partial / "DATASET_CARD.md")
+    shutil.copyfile(dataset_dir / "preview.png", partial / "figures" / "dataset_preview.png")
+    with timer.stage("report"):
+        manifest.write(m, partial / "manifest.json")
+        report.write(partial, m, previous=out, name=str(out))
+    m["training"]["stage_seconds"] = dict(timer.seconds)
+    m["training"]["total_seconds"] = timer.total()
+    manifest.write(m, partial / "manifest.json")
+    report.write(partial, m, previous=out, name=str(out))
+
+    if out.exists():
+        backup = Path(str(out) + ".previous")
+        if backup.exists():
+            shutil.rmtree(backup)
+        out.rename(backup)
+        partial.rename(out)
+        shutil.rmtree(backup)
+    else:
+        partial.rename(out)
+    if not args.keep_work:
+        shutil.rmtree(work)
+    print(f"[krp-train-map] done in {timer.total() / 60:.1f} min: " +
+          ", ".join(f"{k} {v:.0f} s" for k, v in timer.seconds.items()), file=sys.stderr)
+    print(f"models: {out} (REPORT.md, manifest.json)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
