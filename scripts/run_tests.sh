@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# One command for all tests: installs what is missing, builds, runs CTest (GoogleTest + app tests).
+# One command for all tests: installs what is missing (apt, onnxruntime, the Python training environment),
+# builds, runs CTest: GoogleTest, app tests, pytest of models/training, C++/Python parity.
 set -euo pipefail
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$REPO_ROOT/scripts/install_deps.sh"
+bash "$REPO_ROOT/scripts/setup_python.sh"
 bash "$REPO_ROOT/scripts/build.sh"
 cd "$REPO_ROOT/build"
 ctest -j"$(nproc)" --output-on-failure

@@ -26,7 +26,7 @@ DEFAULT_BIN_DIR = REPO_ROOT / "build" / "mrpt_krp_plugin" / "apps"
 
 # Measured on 2 CPU cores (shared/notes/dependencies.md and our runs), to give a first time estimate
 # before the progress bars take over with their own.
-SECONDS_PER_IMAGE_EPOCH = {"compact": 0.012, "yolo": 0.03}
+SECONDS_PER_IMAGE_EPOCH = {"compact": 0.02, "yolo": 0.03}
 DATASET_SECONDS_PER_IMAGE = 0.008
 
 

@@ -1,0 +1,55 @@
+"""A tiny krp-train-map run: a few images, one epoch each; the pipeline must not rot."""
+import json
+import subprocess
+
+import numpy as np
+import onnxruntime as ort
+
+from krp_training import train_map
+
+
+def test_tiny_train_and_export(tmp_path, bin_dir):
+    out = tmp_path / "models"
+    rc = train_map.main(["--world", "office_two_zone", "--out", str(out), "--work-dir", str(tmp_path / "work"),
+                         "--samples-per-zone", "12", "--changed-per-zone", "3", "--classifier-epochs", "1",
+                         "--keypoint-epochs", "1", "--bin-dir", str(bin_dir), "--device", "cpu"])
+    assert rc == 0
+    assert not (tmp_path / "models.partial").exists()
+    m = json.loads((out / "manifest.json").read_text())
+    assert m["zones"] == ["west_wing", "east_wing"]
+    assert m["classifier"]["input"]["shape"] == [1, 1, 160, 160]
+    assert m["keypoints"]["kpt_shape"] == [12, 3]
+    assert m["classifier"]["ir_version"] <= 10 and m["keypoints"]["ir_version"] <= 10
+    assert len(m["landmarks"]["zones"][0]["points"]) == 12
+    assert "krp-train-map --world office_two_zone" in m["training"]["command"]
+    assert set(m["training"]["stage_seconds"]) >= {"dataset", "classifier", "keypoints", "export", "evaluate"}
+
+    cls = ort.InferenceSession(str(out / "zone_classifier.onnx"))
+    p = cls.run(None, {"occupancy": np.zeros((1, 1, 160, 160), np.float32)})[0]
+    assert p.shape == (1, 2) and abs(float(p.sum()) - 1.0) < 1e-5
+    kp = ort.InferenceSession(str(out / "keypoints.onnx"))
+    y = kp.run(None, {"images": np.zeros((1, 3, 160, 160), np.float32)})[0]
+    assert y.shape[:2] == (1, 4 + 2 + 3 * 12)
+
+    for fig in ("classifier_curves.png", "confusion_test.png", "confusion_changed.png"):
+        assert (out / "figures" / fig).stat().st_size > 0
+    report = (out / "REPORT.md").read_text()
+    assert "Zone classifier" in report and "Keypoint model" in report
+
+    # The C++ runtime reads what Python wrote.
+    res = subprocess.run([str(bin_dir / "krp-infer"), "--models", str(out), "--latency", "3"], capture_output=True,
+                         text=True)
+    assert res.returncode == 0, res.stderr
+    assert json.loads(res.stdout)["models"][0]["sha256"] == m["classifier"]["sha256"]
+
+
+def test_existing_output_survives_a_failed_run(tmp_path, bin_dir):
+    out = tmp_path / "models"
+    out.mkdir()
+    (out / "keep.txt").write_text("previous models")
+    try:
+        train_map.main(["--world", "no_such_world", "--out", str(out), "--work-dir", str(tmp_path / "work"),
+                        "--bin-dir", str(bin_dir)])
+    except subprocess.CalledProcessError:
+        pass
+    assert (out / "keep.txt").read_text() == "previous models"
