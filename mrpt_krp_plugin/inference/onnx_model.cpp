@@ -52,7 +52,9 @@ OnnxModel::OnnxModel(const std::string& path, const OnnxRuntimeParams& params)
   Ort::AllocatorWithDefaultOptions alloc;
   input_name_ = s.GetInputNameAllocated(0, alloc).get();
   output_name_ = s.GetOutputNameAllocated(0, alloc).get();
-  const auto info = s.GetInputTypeInfo(0).GetTensorTypeAndShapeInfo();
+  // The shape info is a view into the type info, which must outlive it.
+  const Ort::TypeInfo type_info = s.GetInputTypeInfo(0);
+  const auto info = type_info.GetTensorTypeAndShapeInfo();
   if (info.GetElementType() != ONNX_TENSOR_ELEMENT_DATA_TYPE_FLOAT)
     throw InputError(path, "input '" + input_name_ + "' is not float32");
   input_shape_ = info.GetShape();

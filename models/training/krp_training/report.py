@@ -130,3 +130,21 @@ def write(folder: Path, m: dict, previous: Path = None, name: str = None) -> Non
     tmp = folder / "REPORT.md.partial"
     tmp.write_text("\n".join(lines) + "\n")
     tmp.replace(folder / "REPORT.md")
+
+
+def main(argv=None) -> int:
+    """Rewrites <folder>/REPORT.md from its manifest.json and side results."""
+    import argparse
+
+    p = argparse.ArgumentParser(prog="report", description=main.__doc__)
+    p.add_argument("folder", type=Path)
+    args = p.parse_args(argv)
+    write(args.folder, json.loads((args.folder / "manifest.json").read_text()), name=str(args.folder))
+    print(f"report: {args.folder / 'REPORT.md'}")
+    return 0
+
+
+if __name__ == "__main__":
+    import sys
+
+    sys.exit(main())

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# C++ onnxruntime latency of a model folder's two models, one thread, median of 300 runs on a
+# submap rendered by krp-dataset; writes <folder>/latency.json and refreshes REPORT.md.
+#   scripts/measure_model_latency.sh models/office_two_zone
+set -euo pipefail
+REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+FOLDER="${1:?usage: $0 MODEL_FOLDER}"
+RUNS="${KRP_LATENCY_RUNS:-300}"
+APPS="$REPO_ROOT/build/mrpt_krp_plugin/apps"
+world="$("$REPO_ROOT/.venv/bin/python" -c "import json,sys; print(json.load(open(sys.argv[1]))['world'])" "$FOLDER/manifest.json")"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+"$APPS/krp-dataset" --world "$world" --world-dir "$REPO_ROOT/sim_worlds" --out "$tmp/d" --samples-per-zone 4 \
+    --changed-per-zone 1 --seed 3 >/dev/null 2>&1
+occ="$(find "$tmp/d/classifier/train" -name '*.png' | sort | head -n1)"
+sdt="$(find "$tmp/d/keypoints/images/train" -name '*.png' | sort | head -n1)"
+"$APPS/krp-infer" --models "$FOLDER" --occupancy "$occ" --sdt "$sdt" --threads 1 --latency "$RUNS" \
+    --latency-json "$FOLDER/latency.json"
+"$REPO_ROOT/.venv/bin/python" -m krp_training.report "$FOLDER"
