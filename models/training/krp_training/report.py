@@ -40,7 +40,8 @@ def _classifier_section(m):
 def _keypoint_section(m):
     k = m["keypoints"]["metrics"]
     lines = ["## Keypoint model (shipped: `keypoints.onnx`, YOLOv8n-pose; Table 4.3's analogue)", "",
-             "Measured on the exported ONNX file with ultralytics' validator.", "",
+             "Measured on the exported ONNX file with ultralytics' validator; the weights are the last epoch's "
+             "(no model selection on the validation split).", "",
              "| split | box P | box R | box mAP50 | box mAP50-95 | pose P | pose R | pose mAP50 | pose mAP50-95 |"
              " mean kpt error | median | observed kpts |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]

@@ -26,7 +26,7 @@ DEFAULT_BIN_DIR = REPO_ROOT / "build" / "mrpt_krp_plugin" / "apps"
 
 # Measured on 2 CPU cores (shared/notes/dependencies.md and our runs), to give a first time estimate
 # before the progress bars take over with their own.
-SECONDS_PER_IMAGE_EPOCH = {"compact": 0.02, "yolo": 0.03}
+SECONDS_PER_IMAGE_EPOCH = {"compact": 0.02, "yolo": 0.05}
 DATASET_SECONDS_PER_IMAGE = 0.008
 
 
@@ -44,8 +44,8 @@ def parse_args(argv):
     p.add_argument("--changed-per-zone", type=int, default=60)
     p.add_argument("--strength", type=float, default=1.0, help="scenario generation strength (0 = off)")
     p.add_argument("--classifier", default="compact", choices=classifier_models.ARCHITECTURES)
-    p.add_argument("--classifier-epochs", type=int, default=30)
-    p.add_argument("--keypoint-epochs", type=int, default=60)
+    p.add_argument("--classifier-epochs", type=int, default=20)
+    p.add_argument("--keypoint-epochs", type=int, default=40)
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--device", default="auto", help="auto (GPU when there is one), cpu or cuda")
     p.add_argument("--bin-dir", default=str(DEFAULT_BIN_DIR), help="where the built C++ apps are")
