@@ -67,7 +67,7 @@ def _latency_section(folder: Path, m, name: str):
                 f"{name}`.", ""]
     lat = json.loads(path.read_text())
     current = {m["classifier"]["file"]: m["classifier"]["sha256"], m["keypoints"]["file"]: m["keypoints"]["sha256"]}
-    lines = ["## Inference latency (C++ onnxruntime, one thread)", "", f"Command: `{lat['command']}`", "",
+    lines = ["## Inference latency (C++ onnxruntime, one thread)", "", f"Command: `{lat['command']}` (run by `scripts/measure_model_latency.sh` on a submap it renders)", "",
              "| model | runs | median | p90 |", "|---|---|---|---|"]
     for r in lat["models"]:
         if current.get(r["file"]) != r["sha256"]:
