@@ -90,8 +90,15 @@ TEST(SubmapBuilder, WallAheadIsOccupiedFreeSpaceBeforeItUnknownBehind) {
   EXPECT_TRUE(occupiedNear(g, {3.0, 0.0}));
   EXPECT_TRUE(occupiedNear(g, {3.0, 1.0}));
   EXPECT_EQ(stateAt(4.5, 0.0), CellState::kUnknown);
-  // Behind the robot the floor is open up to the submap's edge.
-  EXPECT_EQ(stateAt(-5.0, 0.0), CellState::kFree);
+  // Behind the robot nothing returned: unknown by default, since a lidar flags a dropout the
+  // same way as open space; free only when no-return beams are asked to carry free space.
+  EXPECT_EQ(stateAt(-5.0, 0.0), CellState::kUnknown);
+  SubmapParams open_floor = p;
+  open_floor.no_return_free_fraction = 0.9;
+  const auto open_sub = buildSubmap(*scan, open_floor);
+  const auto behind = open_sub.grid.robotToPixel({-5.0, 0.0});
+  EXPECT_EQ(open_sub.grid.at(static_cast<int>(std::lround(behind.x)), static_cast<int>(std::lround(behind.y))),
+            CellState::kFree);
 
   // The robot turned left by 90 deg sees the same wall on its right, not ahead.
   const auto turned = ScanSimulator(noiselessOmni()).simulate(world, mrpt::poses::CPose2D(0, 0, M_PI / 2), rng);
