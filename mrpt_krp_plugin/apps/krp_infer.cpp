@@ -88,15 +88,14 @@ static int run(int argc, char** argv) {
     const cv::Mat sdt = args.has("sdt") ? readImage(args.list("sdt").front(), cv::IMREAD_COLOR)
                                         : cv::Mat(n, n, CV_8UC3, cv::Scalar(255, 255, 255));
     const int warmup = std::max(5, runs / 20);
-    json models = json::array();
-    json c = timeCalls([&] { classifier.probabilities(occ); }, runs, warmup);
-    c["file"] = manifest.classifier.file;
-    c["sha256"] = manifest.classifier.sha256;
-    json k = timeCalls([&] { detector.detect(sdt, decode); }, runs, warmup);
-    k["file"] = manifest.keypoints.file;
-    k["sha256"] = manifest.keypoints.sha256;
-    models.push_back(c);
-    models.push_back(k);
+    auto timed = [&](auto&& call, const krp::ManifestModel& model) {
+      json t = timeCalls(call, runs, warmup);
+      t["file"] = model.file;
+      t["sha256"] = model.sha256;
+      return t;
+    };
+    const json models = {timed([&] { classifier.probabilities(occ); }, manifest.classifier),
+                         timed([&] { detector.detect(sdt, decode); }, manifest.keypoints)};
     json out = {{"command", args.commandLine()}, {"threads", ort.intra_op_threads}, {"models", models}};
     std::cout << out.dump(2) << "\n";
     if (args.has("latency-json")) krp::writeFileAtomically(args.get("latency-json"), out.dump(2) + "\n");
@@ -121,9 +120,7 @@ static int run(int argc, char** argv) {
       f.write(reinterpret_cast<const char*>(raw.values.data()), static_cast<std::streamsize>(raw.values.size() * 4));
       if (!f) throw krp::InputError(args.get("raw-dir"), "cannot write the raw output");
     }
-    const auto dets = krp::decodeYoloPose(raw, static_cast<int>(manifest.zones.size()), manifest.keypointsPerZone(),
-                                          img.cols, img.rows, decode);
-    sdt_results.push_back({{"image", path}, {"detections", detectionsJson(dets)}});
+    sdt_results.push_back({{"image", path}, {"detections", detectionsJson(detector.decode(raw, decode))}});
   }
   out["occupancy"] = occ_results;
   out["sdt"] = sdt_results;

@@ -17,9 +17,13 @@ Tensor KeypointDetector::raw(const cv::Mat& sdt_bgr) const {
   return model_.run(imageToTensor(sdt_bgr, manifest_.keypoints.normalization));
 }
 
-std::vector<PoseDetection> KeypointDetector::detect(const cv::Mat& sdt_bgr, const PoseDecodeParams& decode) const {
-  return decodeYoloPose(raw(sdt_bgr), static_cast<int>(manifest_.zones.size()), manifest_.keypointsPerZone(),
-                        sdt_bgr.cols, sdt_bgr.rows, decode);
+std::vector<PoseDetection> KeypointDetector::decode(const Tensor& output0, const PoseDecodeParams& params) const {
+  return decodeYoloPose(output0, static_cast<int>(manifest_.zones.size()), manifest_.keypointsPerZone(),
+                        manifest_.submap_size_px, manifest_.submap_size_px, params);
+}
+
+std::vector<PoseDetection> KeypointDetector::detect(const cv::Mat& sdt_bgr, const PoseDecodeParams& params) const {
+  return decode(raw(sdt_bgr), params);
 }
 
 }  // namespace krp

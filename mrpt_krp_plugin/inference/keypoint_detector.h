@@ -22,6 +22,9 @@ class KeypointDetector {
   /// The model's raw `output0`, before decoding.
   Tensor raw(const cv::Mat& sdt_bgr) const;
 
+  /// Decodes a raw `output0` of this model (detect() is decode(raw(image))).
+  std::vector<PoseDetection> decode(const Tensor& output0, const PoseDecodeParams& decode = {}) const;
+
  private:
   ModelManifest manifest_;
   OnnxModel model_;

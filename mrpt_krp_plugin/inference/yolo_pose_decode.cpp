@@ -14,22 +14,14 @@ namespace {
 // the shift is applied here too so that the rounding near the threshold is the same.
 constexpr float kClassOffsetPx = 7680.0f;
 
-float iou(const PoseDetection& a0, const PoseDetection& b0) {
-  auto shifted = [](const PoseDetection& d) {
-    const float o = static_cast<float>(d.class_id) * kClassOffsetPx;
-    PoseDetection s;
-    s.x1 = d.x1 + o;
-    s.y1 = d.y1 + o;
-    s.x2 = d.x2 + o;
-    s.y2 = d.y2 + o;
-    return s;
-  };
-  const PoseDetection a = shifted(a0), b = shifted(b0);
-  const float w = std::max(0.0f, std::min(a.x2, b.x2) - std::max(a.x1, b.x1));
-  const float h = std::max(0.0f, std::min(a.y2, b.y2) - std::max(a.y1, b.y1));
+float iou(const PoseDetection& a, const PoseDetection& b) {
+  const float oa = static_cast<float>(a.class_id) * kClassOffsetPx;
+  const float ob = static_cast<float>(b.class_id) * kClassOffsetPx;
+  const float w = std::max(0.0f, std::min(a.x2 + oa, b.x2 + ob) - std::max(a.x1 + oa, b.x1 + ob));
+  const float h = std::max(0.0f, std::min(a.y2 + oa, b.y2 + ob) - std::max(a.y1 + oa, b.y1 + ob));
   const float inter = w * h;
-  const float area_a = (a.x2 - a.x1) * (a.y2 - a.y1);
-  const float area_b = (b.x2 - b.x1) * (b.y2 - b.y1);
+  const float area_a = ((a.x2 + oa) - (a.x1 + oa)) * ((a.y2 + oa) - (a.y1 + oa));
+  const float area_b = ((b.x2 + ob) - (b.x1 + ob)) * ((b.y2 + ob) - (b.y1 + ob));
   return inter / (area_a + area_b - inter);
 }
 

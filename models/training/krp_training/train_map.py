@@ -86,7 +86,7 @@ def _device(choice: str) -> str:
     return choice
 
 
-def _map_path(args, card_dir: Path) -> Path:
+def _map_path(args) -> Path:
     if args.map:
         return Path(args.map)
     world_file = Path(args.world) if args.world.endswith(".yaml") else \
@@ -112,13 +112,11 @@ def main(argv=None) -> int:
     dataset_dir = work / "dataset"
     print(f"[krp-train-map] {name}: device {device}, work dir {work}, output {out}", file=sys.stderr)
 
-    n_zones_guess = None
     with timer.stage("dataset"):
         _run(_dataset_command(args, Path(args.bin_dir), dataset_dir))
     card_path = dataset_dir / "dataset_card.json"
     card = json.loads(card_path.read_text())
     zones = card["zones"]
-    n_zones_guess = len(zones)
     sets = {s: read_split(dataset_dir, s, zones) for s in SPLITS}
     n_train = len(sets["train"])
     print(f"[krp-train-map] {len(zones)} zones; images: " + ", ".join(f"{s} {len(v)}" for s, v in sets.items()),
@@ -128,12 +126,13 @@ def main(argv=None) -> int:
                                            seed=args.seed, device=device)
     est = n_train * cp.epochs * SECONDS_PER_IMAGE_EPOCH["compact"] if device == "cpu" else None
     with timer.stage("classifier", est):
-        cls = train_classifier.train(sets["train"], sets["val"], n_zones_guess, cp)
+        cls = train_classifier.train(sets["train"], sets["val"], len(zones), cp)
+    evaluated = {s: train_classifier.evaluate(cls.model, sets[s], len(zones), device)
+                 for s in ("val", "test", "changed")}
     cls_metrics = {
         "architecture": args.classifier, "best_epoch": cls.best_epoch, "train_seconds": cls.seconds,
-        "accuracy": {s: train_classifier.accuracy(cls.model, sets[s], device) for s in ("val", "test", "changed")},
-        "confusion": {s: train_classifier.confusion_matrix(cls.model, sets[s], len(zones), device)
-                      for s in ("test", "changed")},
+        "accuracy": {s: evaluated[s][0] for s in ("val", "test", "changed")},
+        "confusion": {s: evaluated[s][1] for s in ("test", "changed")},
         "images": {s: len(sets[s]) for s in SPLITS},
     }
     plots.classifier_curves(cls.history, f"{name}: zone classifier ({args.classifier})",
@@ -169,7 +168,7 @@ def main(argv=None) -> int:
     training = {"command": command, "device": device, "torch": torch.__version__,
                 "stage_seconds": dict(timer.seconds), "classifier_params": cls.params,
                 "keypoint_params": kpr.params}
-    m = manifest.build(card, export.sha256(card_path), _map_path(args, dataset_dir), landmarks,
+    m = manifest.build(card, export.sha256(card_path), _map_path(args), landmarks,
                        {"file": "zone_classifier.onnx", "sha256": export.sha256(partial / "zone_classifier.onnx"),
                         "architecture": args.classifier, **cls_onnx, "metrics": cls_metrics},
                        {"file": "keypoints.onnx", "sha256": export.sha256(partial / "keypoints.onnx"),
@@ -177,9 +176,7 @@ def main(argv=None) -> int:
                        training)
     shutil.copyfile(dataset_dir / "DATASET_CARD.md", partial / "DATASET_CARD.md")
     shutil.copyfile(dataset_dir / "preview.png", partial / "figures" / "dataset_preview.png")
-    with timer.stage("report"):
-        manifest.write(m, partial / "manifest.json")
-        report.write(partial, m, previous=out, name=str(out))
+    # Written once, after every stage, so the manifest and report carry all the stage times.
     m["training"]["stage_seconds"] = dict(timer.seconds)
     m["training"]["total_seconds"] = timer.total()
     manifest.write(m, partial / "manifest.json")
