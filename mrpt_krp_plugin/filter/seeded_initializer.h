@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "mrpt_krp_plugin/filter/particle_initializer.h"
+#include "mrpt_krp_plugin/filter/uniform_initializer.h"
+#include "mrpt_krp_plugin/relocalize/hypothesis_ranking.h"
+
+namespace krp {
+
+struct SeededInitParams {
+  std::size_t particles_per_hypothesis = 300;  ///< around each hypothesis, before the confidence split
+  std::size_t min_particles = 500;             ///< total, uniform share included
+  std::size_t max_particles = 5000;            ///< total cap
+  /// Share of the particles spread uniformly over the free space, so that a wrong hypothesis
+  /// stays recoverable. Never zero by default; 0 gives the `seeded-no-uniform` method [0..1).
+  double uniform_fraction = 0.05;
+  /// The alignment's covariance is clamped to these standard deviations: below the minimum the
+  /// cloud would be too narrow for the filter's motion noise to keep alive, above the maximum a
+  /// hypothesis is no longer concentrated.
+  double min_std_xy_m = 0.15, max_std_xy_m = 1.0;
+  double min_std_yaw_deg = 3.0, max_std_yaw_deg = 20.0;
+  /// With no hypothesis at all, the filter starts as uniform MCL with these settings.
+  UniformInitParams fallback;
+  double free_cell_min_freeness = 0.7;  ///< a map cell with p(free) above this is free [0..1]
+  uint64_t seed = 1;
+};
+
+/// What the last initialize() did, for reports.
+struct SeedingRecord {
+  Ranking ranking;
+  std::size_t particles = 0, uniform_particles = 0;
+  bool fell_back_to_uniform = false;
+};
+
+/// `seeded`: the relocalizer's hypotheses become a Gaussian mixture (particles split by
+/// confidence; when the relocalizer is unsure, the hypotheses still share the particles in
+/// proportion to their confidence) plus a uniform share over free space. No hypothesis at all
+/// means uniform MCL.
+class SeededInitializer : public ParticleInitializer {
+ public:
+  /// Turns the first scan into ranked hypotheses (a Relocalizer in the apps, a stub in tests).
+  using HypothesisSource = std::function<Ranking(const mrpt::obs::CObservation2DRangeScan&)>;
+
+  SeededInitializer(HypothesisSource source, SeededInitParams params = {}, std::string name = "seeded");
+  std::string name() const override { return name_; }
+  void initialize(mrpt::slam::CMonteCarloLocalization2D& pf, mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf_options,
+                  const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) override;
+
+  const std::optional<SeedingRecord>& lastSeeding() const { return last_; }
+
+ private:
+  HypothesisSource source_;
+  SeededInitParams params_;
+  std::string name_;
+  std::optional<SeedingRecord> last_;
+};
+
+}  // namespace krp

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/relocalize/hypothesis_ranking.h"
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace krp {
+
+namespace {
+bool samePlace(const PoseHypothesis& a, const PoseHypothesis& b, const HypothesisRankingParams& p) {
+  return std::hypot(a.pose.x - b.pose.x, a.pose.y - b.pose.y) < p.merge_distance_m &&
+         std::abs(mrpt::math::wrapToPi(a.pose.phi - b.pose.phi)) < p.merge_angle_deg * M_PI / 180.0;
+}
+}  // namespace
+
+Ranking rankHypotheses(std::vector<PoseHypothesis> candidates, const HypothesisRankingParams& params) {
+  Ranking r;
+  const size_t proposed = candidates.size();
+  double best_rejected_fit = 0.0;
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.fit_fraction > b.fit_fraction; });
+  for (auto& c : candidates) {
+    if (c.fit_fraction < params.min_fit_fraction) {
+      best_rejected_fit = std::max(best_rejected_fit, c.fit_fraction);
+      continue;
+    }
+    const bool duplicate = std::any_of(r.hypotheses.begin(), r.hypotheses.end(),
+                                       [&](const auto& kept) { return samePlace(kept, c, params); });
+    if (!duplicate) r.hypotheses.push_back(c);
+  }
+  // Softmax against the implicit "somewhere else": shift by the largest exponent for stability.
+  double top = params.fit_sharpness * params.null_fit_fraction;
+  for (const auto& h : r.hypotheses) top = std::max(top, params.fit_sharpness * h.fit_fraction);
+  double total = std::exp(params.fit_sharpness * params.null_fit_fraction - top);
+  for (const auto& h : r.hypotheses) total += std::exp(params.fit_sharpness * h.fit_fraction - top);
+  for (auto& h : r.hypotheses) h.confidence = std::exp(params.fit_sharpness * h.fit_fraction - top) / total;
+  if (static_cast<int>(r.hypotheses.size()) > params.max_hypotheses) r.hypotheses.resize(params.max_hypotheses);
+
+  std::ostringstream why;
+  if (r.hypotheses.empty()) {
+    if (proposed == 0)
+      why << "no hypothesis: the keypoint model found no usable keypoints";
+    else
+      why << "no hypothesis explains the scan: best fit " << best_rejected_fit << " < " << params.min_fit_fraction;
+  } else if (r.hypotheses.front().confidence < params.min_confidence) {
+    why << "ambiguous: best confidence " << r.hypotheses.front().confidence << " < " << params.min_confidence
+        << " (" << r.hypotheses.size() << " distinct hypotheses)";
+  }
+  r.reason = why.str();
+  r.localized = r.reason.empty();
+  return r;
+}
+
+}  // namespace krp

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mrpt_krp_plugin/relocalize/pose_hypothesis.h"
+
+namespace krp {
+
+struct HypothesisRankingParams {
+  double merge_distance_m = 0.5;   ///< hypotheses closer than this (and merge_angle) are one [m]
+  double merge_angle_deg = 10.0;   ///< [deg]
+  /// Confidence is a softmax of sharpness * fit_fraction over the hypotheses and one implicit
+  /// "somewhere else" alternative with fit `null_fit_fraction`: a lone hypothesis that explains
+  /// no more of the scan than that gets at most one half. Defaults chosen by hand, not yet
+  /// calibrated on held-out trials.
+  double fit_sharpness = 25.0;
+  double null_fit_fraction = 0.6;
+  double min_fit_fraction = 0.5;  ///< below this a hypothesis is dropped: the map does not explain the scan
+  double min_confidence = 0.8;    ///< the best must reach this to be called localized
+  int max_hypotheses = 10;        ///< kept after ranking
+};
+
+struct Ranking {
+  std::vector<PoseHypothesis> hypotheses;  ///< best first, confidence set
+  bool localized = false;
+  std::string reason;  ///< why not localized (empty when localized)
+};
+
+/// Merges near-duplicate hypotheses (keeping the better fit), drops those the map does not
+/// explain, assigns confidences and decides whether the best one is credible.
+Ranking rankHypotheses(std::vector<PoseHypothesis> candidates, const HypothesisRankingParams& params = {});
+
+}  // namespace krp

@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/relocalize/pose_verifier.h"
+
+namespace krp {
+
+PoseVerifier::PoseVerifier(const mrpt::maps::COccupancyGridMap2D& map, PoseVerifierParams params)
+    : params_(params), scorer_(map, params.fit), icp_(map, params.icp) {}
+
+Ranking PoseVerifier::verify(const mrpt::obs::CObservation2DRangeScan& scan,
+                             std::vector<PoseHypothesis> candidates) const {
+  for (auto& h : candidates) {
+    if (params_.icp_refine) h.pose = icp_.refine(scan, h.pose);
+    h.fit_fraction = scorer_.score(scan, h.pose).fit_fraction;
+  }
+  return rankHypotheses(std::move(candidates), params_.ranking);
+}
+
+}  // namespace krp

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/relocalize/relocalizer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+#include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/submap/occupancy_image.h"
+#include "mrpt_krp_plugin/submap/sdt_image.h"
+#include "mrpt_krp_plugin/submap/submap_builder.h"
+
+namespace krp {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+void requireLandmarksInsideMap(const ModelManifest& m, const mrpt::maps::COccupancyGridMap2D& map) {
+  for (size_t z = 0; z < m.landmarks.size(); ++z)
+    for (const auto& p : m.landmarks[z])
+      if (p.x < map.getXMin() || p.x > map.getXMax() || p.y < map.getYMin() || p.y > map.getYMax())
+        throw InputError(m.folder + "/manifest.json",
+                         "landmark of zone '" + m.zones[z] + "' lies outside the map: the models were trained on "
+                         "another map (world '" + m.world + "')");
+}
+
+/// The `count` zone indices with the highest probability.
+std::vector<int> topZones(const std::vector<float>& probs, int count) {
+  std::vector<int> idx(probs.size());
+  std::iota(idx.begin(), idx.end(), 0);
+  std::stable_sort(idx.begin(), idx.end(), [&](int a, int b) { return probs[a] > probs[b]; });
+  idx.resize(std::min<size_t>(idx.size(), static_cast<size_t>(std::max(count, 0))));
+  return idx;
+}
+
+}  // namespace
+
+Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
+                         RelocalizerParams params)
+    : params_(params),
+      manifest_(readModelManifest(models_dir)),
+      classifier_(manifest_, params.onnx),
+      detector_(manifest_, params.onnx),
+      verifier_(map, params.verifier) {
+  requireLandmarksInsideMap(manifest_, map);
+}
+
+RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRangeScan& scan) const {
+  RelocalizationResult r;
+  const auto start = Clock::now();
+  auto t = start;
+  SubmapParams sp;
+  sp.size_m = manifest_.submap_size_m;
+  sp.size_px = manifest_.submap_size_px;
+  const Submap sub = buildSubmap(scan, sp);
+  const cv::Mat occupancy = renderOccupancyImage(sub.grid);
+  const cv::Mat sdt = renderSdtImage(sub.grid, SdtImageParams{manifest_.sdt_clip_m});
+  r.times.submap_ms = msSince(t);
+
+  t = Clock::now();
+  r.zone_probabilities = classifier_.probabilities(occupancy);
+  r.times.classifier_ms = msSince(t);
+
+  t = Clock::now();
+  const auto all = detector_.detect(sdt, params_.decode);  // best score first
+  r.times.keypoints_ms = msSince(t);
+
+  t = Clock::now();
+  std::vector<PoseDetection> used;
+  for (int zone : topZones(r.zone_probabilities, params_.top_zones)) {
+    int kept = 0;
+    for (const auto& d : all)
+      if (d.class_id == zone && kept < params_.max_detections_per_zone) used.push_back(d), ++kept;
+  }
+  r.detections = static_cast<int>(used.size());
+  auto candidates = keypointHypotheses(used, sub.grid, manifest_.landmarks, r.zone_probabilities, params_.keypoints);
+  r.candidates = static_cast<int>(candidates.size());
+  r.times.alignment_ms = msSince(t);
+
+  t = Clock::now();
+  r.ranking = verifier_.verify(scan, std::move(candidates));
+  r.times.verification_ms = msSince(t);
+  r.times.total_ms = msSince(start);
+  return r;
+}
+
+}  // namespace krp

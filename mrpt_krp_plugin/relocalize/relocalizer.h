@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mrpt_krp_plugin/inference/keypoint_detector.h"
+#include "mrpt_krp_plugin/inference/model_manifest.h"
+#include "mrpt_krp_plugin/inference/zone_classifier.h"
+#include "mrpt_krp_plugin/relocalize/keypoint_hypotheses.h"
+#include "mrpt_krp_plugin/relocalize/pose_verifier.h"
+
+namespace krp {
+
+struct RelocalizerParams {
+  /// The keypoint model's detections are used for this many of the classifier's most likely
+  /// zones: symmetric buildings make the top zone wrong often enough that verification against
+  /// the map, not the classifier, should decide between look-alikes.
+  int top_zones = 2;
+  int max_detections_per_zone = 3;  ///< highest-scoring detections kept per zone
+  /// Lower than ultralytics' prediction default (0.25): a weak detection only proposes a pose,
+  /// which verification then accepts or rejects.
+  PoseDecodeParams decode{0.1f, 0.7f, 300};
+  KeypointHypothesesParams keypoints;
+  PoseVerifierParams verifier;
+  OnnxRuntimeParams onnx;
+};
+
+/// Wall-clock time of each stage of one relocalization [ms].
+struct RelocalizationTimes {
+  double submap_ms = 0, classifier_ms = 0, keypoints_ms = 0, alignment_ms = 0, verification_ms = 0, total_ms = 0;
+};
+
+struct RelocalizationResult {
+  Ranking ranking;                       ///< the hypotheses, best first, and whether localized
+  std::vector<float> zone_probabilities;  ///< manifest zone order
+  int detections = 0;                     ///< keypoint-model detections used
+  int candidates = 0;                     ///< poses proposed by the alignment
+  RelocalizationTimes times;
+};
+
+/// One scan -> submap -> zone probabilities -> keypoints on the top zones -> robust SE(2)
+/// alignment to the zones' landmarks -> ICP and scan-fit verification against the map.
+class Relocalizer {
+ public:
+  /// Loads `<models_dir>/manifest.json` and both models. InputError when the models or the
+  /// manifest cannot be used, or when the manifest's landmarks lie outside `map`.
+  Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map, RelocalizerParams params = {});
+
+  RelocalizationResult relocalize(const mrpt::obs::CObservation2DRangeScan& scan) const;
+
+  const ModelManifest& manifest() const { return manifest_; }
+  const PoseVerifier& verifier() const { return verifier_; }
+
+ private:
+  RelocalizerParams params_;
+  ModelManifest manifest_;
+  ZoneClassifier classifier_;
+  KeypointDetector detector_;
+  PoseVerifier verifier_;
+};
+
+}  // namespace krp

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <gtest/gtest.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <cmath>
+
+#include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/filter/seeded_initializer.h"
+#include "support/test_maps.h"
+
+namespace krp {
+namespace {
+
+mrpt::obs::CSensoryFrame frameWithScan() {
+  mrpt::obs::CSensoryFrame sf;
+  auto scan = mrpt::obs::CObservation2DRangeScan::Create();
+  scan->resizeScan(10);
+  sf.insert(scan);
+  return sf;
+}
+
+PoseHypothesis hypothesis(double x, double y, double confidence) {
+  PoseHypothesis h;
+  h.pose = {x, y, 0.5};
+  h.cov.setZero();
+  h.cov(0, 0) = h.cov(1, 1) = 0.04;
+  h.cov(2, 2) = 0.01;
+  h.confidence = confidence;
+  return h;
+}
+
+size_t near(const mrpt::slam::CMonteCarloLocalization2D& pf, double x, double y, double radius) {
+  size_t n = 0;
+  for (const auto& p : pf.m_particles) n += std::hypot(p.d.x - x, p.d.y - y) < radius;
+  return n;
+}
+
+TEST(SeededInitializer, SplitsParticlesByConfidenceAndKeepsAUniformShare) {
+  const auto room = test::asymmetricRoom();
+  Ranking ranking;
+  ranking.hypotheses = {hypothesis(5.5, 2.0, 0.75), hypothesis(1.5, 5.0, 0.25)};
+  SeededInitParams p;
+  p.particles_per_hypothesis = 1000;
+  p.uniform_fraction = 0.1;
+  SeededInitializer init([&](const auto&) { return ranking; }, p);
+  mrpt::slam::CMonteCarloLocalization2D pf;
+  mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+  init.initialize(pf, o, room, frameWithScan());
+
+  ASSERT_TRUE(init.lastSeeding().has_value());
+  EXPECT_FALSE(init.lastSeeding()->fell_back_to_uniform);
+  EXPECT_EQ(pf.size(), 2223u);  // ceil(2000 / 0.9)
+  EXPECT_EQ(init.lastSeeding()->uniform_particles, 222u);
+  // 4 sigma of 0.2 m holds nearly all of a hypothesis's particles; the uniform share adds a few.
+  const double seeded = 2223 - 222;
+  EXPECT_NEAR(near(pf, 5.5, 2.0, 0.8) / seeded, 0.75, 0.03);
+  EXPECT_NEAR(near(pf, 1.5, 5.0, 0.8) / seeded, 0.25, 0.03);
+  size_t on_free = 0;
+  for (const auto& part : pf.m_particles) on_free += room.getPos(part.d.x, part.d.y) > 0.5;
+  EXPECT_GT(on_free, pf.size() * 9 / 10);
+}
+
+TEST(SeededInitializer, NoUniformShareWhenAskedAndUniformFallbackWithoutHypotheses) {
+  const auto room = test::asymmetricRoom();
+  Ranking one, none;
+  one.hypotheses = {hypothesis(5.5, 2.0, 1.0)};
+  SeededInitParams p;
+  p.uniform_fraction = 0.0;
+  SeededInitializer seeded([&](const auto&) { return one; }, p);
+  mrpt::slam::CMonteCarloLocalization2D pf;
+  mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+  seeded.initialize(pf, o, room, frameWithScan());
+  EXPECT_EQ(pf.size(), p.min_particles);
+  EXPECT_EQ(near(pf, 5.5, 2.0, 1.0), pf.size());
+
+  p.fallback.particles = 3000;
+  SeededInitializer fallback([&](const auto&) { return none; }, p);
+  fallback.initialize(pf, o, room, frameWithScan());
+  EXPECT_TRUE(fallback.lastSeeding()->fell_back_to_uniform);
+  EXPECT_EQ(pf.size(), 3000u);
+  EXPECT_LT(near(pf, 5.5, 2.0, 1.0), 300u);
+}
+
+TEST(SeededInitializer, RefusesBadParametersAndFramesWithoutScans) {
+  SeededInitParams p;
+  p.uniform_fraction = 1.0;
+  EXPECT_THROW(SeededInitializer([](const auto&) { return Ranking{}; }, p), InputError);
+  SeededInitializer init([](const auto&) { return Ranking{}; });
+  mrpt::slam::CMonteCarloLocalization2D pf;
+  mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+  EXPECT_THROW(init.initialize(pf, o, test::asymmetricRoom(), mrpt::obs::CSensoryFrame()), InputError);
+}
+
+}  // namespace
+}  // namespace krp
