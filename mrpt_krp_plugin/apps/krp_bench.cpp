@@ -34,6 +34,10 @@ static int run(int argc, char** argv) {
                 {"kld-max", "N", "amcl-kld: max particles (amcl default)", "5000"},
                 {"kld-min", "N", "amcl-kld: min particles (amcl default)", "100"},
                 {"kld-high-max", "N", "amcl-kld-50k: max particles", "50000"},
+                {"models-root", "DIR", "seeded methods: models of world W in DIR/W (krp-train-map's output)", "models"},
+                {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
+                {"seeded-max-particles", "N", "seeded: particle cap", "5000"},
+                {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"tol-xy", "M", "convergence tolerance, position", "0.5"},
                 {"tol-deg", "DEG", "convergence tolerance, heading", "10"},
                 {"save-rawlogs", "", "also write each trial as an MRPT rawlog + ground truth under OUT/rawlogs", ""}});
@@ -51,6 +55,10 @@ static int run(int argc, char** argv) {
   cfg.method_settings.amcl.max_particles = static_cast<size_t>(args.integer("kld-max"));
   cfg.method_settings.amcl.min_particles = static_cast<size_t>(args.integer("kld-min"));
   cfg.method_settings.amcl_high_max_particles = static_cast<size_t>(args.integer("kld-high-max"));
+  cfg.method_settings.models_root = args.get("models-root");
+  cfg.method_settings.seeded.uniform_fraction = args.number("seeded-uniform-fraction");
+  cfg.method_settings.seeded.max_particles = static_cast<size_t>(args.integer("seeded-max-particles"));
+  cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integer("top-zones"));
   cfg.criteria.max_error_xy_m = args.number("tol-xy");
   cfg.criteria.max_error_phi_deg = args.number("tol-deg");
   const std::string out = args.get("out");
@@ -58,7 +66,7 @@ static int run(int argc, char** argv) {
 
   const auto records = krp::runBench(cfg, std::cerr);
   krp::writeBenchReport(records, cfg, args.commandLine(), out);
-  std::cout << "\n" << krp::summaryTable(krp::summarize(records)) << "\nReport: " << (fs::path(out) / "REPORT.md").string()
+  std::cout << "\n" << krp::summaryTable(krp::summarize(records, cfg.criteria.max_error_xy_m)) << "\nReport: " << (fs::path(out) / "REPORT.md").string()
             << " (trials.csv, updates.csv, summary.json, plots beside it)\n";
   return 0;
 }

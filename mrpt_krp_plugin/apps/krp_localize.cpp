@@ -13,6 +13,7 @@
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
+#include "mrpt_krp_plugin/relocalize/relocalization_output.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 
 namespace fs = std::filesystem;
@@ -23,7 +24,8 @@ constexpr char kSection[] = "localize";
 
 // The INI's [localize] keys; each may also be given as a flag of the same name with '-'.
 const std::set<std::string> kIniKeys = {"map", "rawlog", "method", "ground_truth", "out_dir", "seed",
-                                        "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min"};
+                                        "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min",
+                                        "models", "single_scan", "top_zones", "seeded_uniform_fraction"};
 
 std::string flagName(std::string key) {
   for (auto& c : key) if (c == '_') c = '-';
@@ -49,7 +51,7 @@ std::map<std::string, std::string> mergeSettings(const CliArgs& args) {
     if (!args.has(flagName(k))) s[k] = cfg.read_string(kSection, k, "");
   }
   // Relative paths in the INI are relative to the INI's folder.
-  for (const char* k : {"map", "rawlog", "ground_truth", "out_dir"})
+  for (const char* k : {"map", "rawlog", "ground_truth", "out_dir", "models"})
     if (!args.has(flagName(k)) && !s[k].empty() && fs::path(s[k]).is_relative() && keys.end() != std::find(keys.begin(), keys.end(), k))
       s[k] = (fs::path(ini).parent_path() / s[k]).string();
   return s;
@@ -64,6 +66,31 @@ double toNumber(const std::map<std::string, std::string>& s, const std::string& 
   }
   throw krp::InputError(key, "'" + s.at(key) + "' is not a number");
 }
+
+// --single-scan: the relocalizer's answer for one scan, as text, JSON and a picture.
+int relocalizeOneScan(const krp::Relocalizer& relocalizer, const mrpt::maps::COccupancyGridMap2D& map,
+                      const std::vector<krp::RawlogStep>& steps, const std::vector<mrpt::math::TPose2D>& truth,
+                      long index, const std::string& out_dir) {
+  if (index >= static_cast<long>(steps.size()))
+    throw krp::InputError("--single-scan", std::to_string(index) + " is past the rawlog's " + std::to_string(steps.size()) + " steps");
+  const auto scan = steps[index].observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+  if (!scan) throw krp::InputError("rawlog step " + std::to_string(index), "holds no 2D range scan");
+  const auto result = relocalizer.relocalize(*scan);
+  const auto& zones = relocalizer.manifest().zones;
+  auto j = krp::relocalizationJson(result, zones);
+  std::optional<mrpt::math::TPose2D> t;
+  if (!truth.empty()) {
+    t = truth[index];
+    j["truth"] = {{"x_m", t->x}, {"y_m", t->y}, {"yaw_deg", t->phi * 180.0 / M_PI}};
+  }
+  const fs::path out(out_dir);
+  krp::writeFileAtomically((out / "hypotheses.json").string(), j.dump(2) + "\n");
+  krp::writeHypothesesPng(map, result, t, (out / "hypotheses.png").string());
+  std::cout << krp::relocalizationText(result, zones);
+  if (t) std::cout << "truth: x " << t->x << " m, y " << t->y << " m, yaw " << t->phi * 180.0 / M_PI << " deg\n";
+  std::cout << "written: " << (out / "hypotheses.json").string() << ", " << (out / "hypotheses.png").string() << "\n";
+  return 0;
+}
 }  // namespace
 
 static int run(int argc, char** argv) {
@@ -74,7 +101,12 @@ static int run(int argc, char** argv) {
                {{"ini", "FILE", "INI file with a [localize] section", ""},
                 {"map", "FILE", "map (.yaml, .gridmap[.gz], .bt/.ot)", ""},
                 {"rawlog", "FILE", "MRPT rawlog with odometry + 2D scans", ""},
-                {"method", "NAME", "uniform-mcl, amcl-kld or amcl-kld-50k", "amcl-kld"},
+                {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded or seeded-no-uniform", "amcl-kld"},
+                {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
+                {"single-scan", "STEP", "relocalize from this rawlog step's scan only: print the hypotheses, write "
+                 "hypotheses.json and hypotheses.png (-1 = run the filter)", "-1"},
+                {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
+                {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"ground-truth", "FILE", "ground truth 'step x y phi' (optional)", ""},
                 {"out-dir", "DIR", "output folder", "out/localize"},
                 {"seed", "N", "filter seed", "1"},
@@ -92,8 +124,15 @@ static int run(int argc, char** argv) {
   ms.uniform.particles_per_m2 = toNumber(s, "uniform_particles_per_m2");
   ms.amcl.max_particles = static_cast<size_t>(toNumber(s, "kld_max"));
   ms.amcl.min_particles = static_cast<size_t>(toNumber(s, "kld_min"));
-  auto init = krp::makeInitializer(s["method"], ms);
+  ms.relocalizer.top_zones = static_cast<int>(toNumber(s, "top_zones"));
+  ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
+  const auto single_scan = static_cast<long>(toNumber(s, "single_scan"));
   const auto map = krp::loadOccupancyMap(s["map"]);
+  std::shared_ptr<const krp::Relocalizer> relocalizer;
+  if (krp::methodNeedsModels(s["method"]) || single_scan >= 0) {
+    if (s["models"].empty()) throw krp::InputError("--models", "required by method '" + s["method"] + "' and --single-scan");
+    relocalizer = std::make_shared<krp::Relocalizer>(s["models"], *map.grid, ms.relocalizer);
+  }
   const auto steps = krp::readRawlog(s["rawlog"]);
   std::vector<mrpt::math::TPose2D> truth;
   if (!s["ground_truth"].empty()) {
@@ -102,6 +141,8 @@ static int run(int argc, char** argv) {
       throw krp::InputError(s["ground_truth"], std::to_string(truth.size()) + " poses for " + std::to_string(steps.size()) +
                                                    " rawlog steps");
   }
+  if (single_scan >= 0) return relocalizeOneScan(*relocalizer, *map.grid, steps, truth, single_scan, s["out_dir"]);
+  auto init = krp::makeInitializer(s["method"], ms, relocalizer);
   krp::MclParams mp;
   mp.seed = static_cast<uint32_t>(toNumber(s, "seed"));
   krp::MclLocalizer loc(map.grid, init, mp);

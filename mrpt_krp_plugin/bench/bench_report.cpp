@@ -29,9 +29,25 @@ std::string ratio(double v, double ref) {
   return num(v / ref, 3) + "x";
 }
 
+/// The seeded methods' first-scan relocalization, before the filter runs.
+std::string relocalizerTable(const std::vector<MethodSummary>& summaries, double right_within_m) {
+  std::ostringstream o;
+  for (const auto& s : summaries) {
+    if (s.seed_localized_rate < 0) continue;
+    if (o.tellp() == 0)
+      o << "Relocalizer on the first scan (seeded methods): \"localized\" is its own verdict; \"best right\" is how "
+           "often its best hypothesis was within " << right_within_m << " m of the truth, whatever the verdict.\n\n"
+        << "| world | lidar | method | localized | best right |\n|---|---|---|---|---|\n";
+    o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << num(100.0 * s.seed_localized_rate)
+      << " % | " << num(100.0 * s.seed_best_right_rate) << " % |\n";
+  }
+  if (o.tellp() > 0) o << "\n";
+  return o.str();
+}
+
 }  // namespace
 
-std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records) {
+std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, double right_within_m) {
   std::map<Key, std::vector<const TrialRecord*>> groups;
   std::vector<Key> order;
   for (const auto& r : records) {
@@ -45,9 +61,14 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records) {
     MethodSummary s{std::get<0>(k), std::get<1>(k), std::get<2>(k)};
     s.trials = static_cast<int>(g.size());
     std::vector<double> upd, dist, cpu, init, meanp, pupd, ferr, ferr_c, fphi_c;
-    int ok = 0, cbw = 0;
+    int ok = 0, cbw = 0, seeded = 0, seed_localized = 0, seed_right = 0;
     for (const auto* r : g) {
       const auto& o = r->outcome;
+      if (r->seed_hypotheses >= 0) {
+        ++seeded;
+        seed_localized += r->seed_localized ? 1 : 0;
+        seed_right += (r->seed_best_error_xy_m >= 0 && r->seed_best_error_xy_m <= right_within_m) ? 1 : 0;
+      }
       init.push_back(static_cast<double>(o.initial_particles));
       meanp.push_back(o.mean_particles);
       ferr.push_back(o.final_error_xy_m);
@@ -63,6 +84,10 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records) {
     }
     s.success_rate = s.trials ? static_cast<double>(ok) / s.trials : 0.0;
     s.confident_wrong_rate = s.trials ? static_cast<double>(cbw) / s.trials : 0.0;
+    if (seeded > 0) {
+      s.seed_localized_rate = static_cast<double>(seed_localized) / seeded;
+      s.seed_best_right_rate = static_cast<double>(seed_right) / seeded;
+    }
     s.median_updates = median(upd);
     s.median_distance_m = median(dist);
     s.median_cpu_s = median(cpu);
@@ -103,12 +128,13 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                       const std::string& out_dir) {
   namespace fs = std::filesystem;
   fs::create_directories(out_dir);
-  const auto summaries = summarize(records);
+  const auto summaries = summarize(records, cfg.criteria.max_error_xy_m);
 
   std::ostringstream trials_csv, updates_csv;
   trials_csv << "world,lidar,method,trial,trial_seed,filter_seed,converged,updates_to_convergence,"
                 "distance_to_convergence_m,cpu_to_convergence_s,initial_particles,mean_particles,"
-                "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,total_cpu_s\n";
+                "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,total_cpu_s,"
+                "seed_hypotheses,seed_localized,seed_best_error_xy_m\n";
   updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,particles,cpu_s,distance_m\n";
   for (const auto& r : records) {
     const auto& o = r.outcome;
@@ -116,7 +142,8 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                << r.filter_seed << "," << o.converged << "," << o.updates_to_convergence << ","
                << o.distance_to_convergence_m << "," << o.cpu_to_convergence_s << "," << o.initial_particles << ","
                << o.mean_particles << "," << o.particle_updates_to_convergence << "," << o.final_error_xy_m << ","
-               << o.final_error_phi_deg << "," << o.confident_but_wrong << "," << o.total_cpu_s << "\n";
+               << o.final_error_phi_deg << "," << o.confident_but_wrong << "," << o.total_cpu_s << "," << r.seed_hypotheses
+               << "," << r.seed_localized << "," << r.seed_best_error_xy_m << "\n";
     for (size_t i = 0; i < r.updates.size(); ++i) {
       const auto& u = r.updates[i];
       updates_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << i << "," << u.error_xy_m
@@ -146,7 +173,9 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                             {"median_particle_updates_to_convergence", s.median_particle_updates},
                             {"median_final_error_m_converged", s.median_final_error_converged_m},
                             {"median_final_error_deg_converged", s.median_final_error_phi_deg},
-                            {"median_final_error_m_all", s.median_final_error_m}});
+                            {"median_final_error_m_all", s.median_final_error_m},
+                            {"seed_localized_rate", s.seed_localized_rate},
+                            {"seed_best_right_rate", s.seed_best_right_rate}});
   // NaN medians (no converged trial) become null in JSON.
   writeFileAtomically((fs::path(out_dir) / "summary.json").string(), j.dump(2) + "\n");
 
@@ -196,7 +225,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
      << cfg.criteria.confident_std_xy_m << " m and its heading std below " << cfg.criteria.confident_std_phi_deg
      << " deg, yet the mean is outside tolerance. Medians of updates, distance, CPU and particle-updates are over "
         "converged trials. Ratios are against uniform-mcl in this same run.\n\n"
-     << summaryTable(summaries) << "\n";
+     << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m);
   for (const auto& stem : plot_files)
     md << "![converged " << stem << "](" << stem << "_converged.png)\n![particles " << stem << "](" << stem
        << "_particles.png)\n\n";

@@ -23,9 +23,12 @@ struct MethodSummary {
   double median_final_error_m = 0.0;         ///< over all trials
   double median_final_error_converged_m = 0.0;  ///< over converged trials
   double median_final_error_phi_deg = 0.0;   ///< over converged trials
+  /// Seeded methods: the relocalizer's first-scan answer (negative for other methods).
+  double seed_localized_rate = -1.0;    ///< it called itself localized / trials
+  double seed_best_right_rate = -1.0;   ///< its best hypothesis was within max_error_xy_m of the truth / trials
 };
 
-std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records);
+std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, double right_within_m = 0.5);
 
 /// The Markdown table of summaries, with ratios against `reference_method` where present.
 std::string summaryTable(const std::vector<MethodSummary>& summaries, const std::string& reference_method = "uniform-mcl");

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/bench/bench_runner.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <ostream>
 
@@ -17,19 +19,31 @@ constexpr uint64_t kWorldStride = 1000000, kLidarStride = 10000, kFilterStream =
 }  // namespace
 
 std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
-  for (const auto& m : cfg.methods) makeInitializer(m, cfg.method_settings);  // fail early on a bad name
+  const auto known = methodNames();
+  bool need_models = false;
+  for (const auto& m : cfg.methods) {  // fail early on a bad name
+    if (std::find(known.begin(), known.end(), m) == known.end()) makeInitializer(m, cfg.method_settings);
+    need_models = need_models || methodNeedsModels(m);
+  }
   struct Job {
     World world;
     std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map;
     LidarProfile lidar;
     size_t world_index, lidar_index;
+    std::shared_ptr<const Relocalizer> relocalizer;
   };
   std::vector<Job> jobs;
   for (size_t wi = 0; wi < cfg.world_files.size(); ++wi) {
     const World w = readWorld(cfg.world_files[wi]);
     const auto map = loadOccupancyMap(w.map_path).grid;
     const auto lidars = cfg.lidars.empty() ? std::vector<std::string>{w.default_lidar_profile} : cfg.lidars;
-    for (size_t li = 0; li < lidars.size(); ++li) jobs.push_back({w, map, w.lidar(lidars[li]), wi, li});
+    std::shared_ptr<const Relocalizer> relocalizer;
+    if (need_models) {
+      const auto models = (std::filesystem::path(cfg.method_settings.models_root) / w.name).string();
+      relocalizer = std::make_shared<Relocalizer>(models, *map, cfg.method_settings.relocalizer);
+      log << "krp-bench: " << w.name << ": models " << models << " (lidar " << relocalizer->manifest().lidar_name << ")\n";
+    }
+    for (size_t li = 0; li < lidars.size(); ++li) jobs.push_back({w, map, w.lidar(lidars[li]), wi, li, relocalizer});
   }
   log << "krp-bench: base seed " << cfg.seed << "; " << jobs.size() << " world/lidar pair(s) x " << cfg.methods.size()
       << " method(s) x " << cfg.trials << " trial(s)\n";
@@ -54,10 +68,22 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
       for (const auto& method : cfg.methods) {
         MclParams mp = cfg.mcl;
         mp.seed = static_cast<uint32_t>(filter_seed);
-        MclLocalizer loc(job.map, makeInitializer(method, cfg.method_settings), mp);
+        MethodSettings ms = cfg.method_settings;
+        ms.seeded.seed = filter_seed;
+        const auto init = makeInitializer(method, ms, job.relocalizer);
+        MclLocalizer loc(job.map, init, mp);
         TrialRecord rec{job.world.name, job.lidar.name, method, t, trial_seed, filter_seed, free_m2, {}, {}};
         for (size_t i = 0; i < steps.size(); ++i)
           rec.updates.push_back(makeUpdateRecord(loc.update(steps[i]), trial.truth[i], trial.distance_m[i]));
+        if (const auto seeded = std::dynamic_pointer_cast<SeededInitializer>(init); seeded && seeded->lastSeeding()) {
+          const auto& ranking = seeded->lastSeeding()->ranking;
+          rec.seed_hypotheses = static_cast<int>(ranking.hypotheses.size());
+          rec.seed_localized = ranking.localized;
+          if (!ranking.hypotheses.empty()) {
+            const auto& best = ranking.hypotheses.front().pose;
+            rec.seed_best_error_xy_m = std::hypot(best.x - trial.truth[0].x, best.y - trial.truth[0].y);
+          }
+        }
         rec.outcome = evaluateTrial(rec.updates, cfg.criteria);
         bar.advance(1, job.world.name + "/" + method + " trial " + std::to_string(t) + " seed " + std::to_string(trial_seed));
         out.push_back(std::move(rec));

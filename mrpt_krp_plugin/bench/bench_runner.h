@@ -33,6 +33,10 @@ struct TrialRecord {
   double free_area_m2 = 0.0;
   TrialOutcome outcome;
   std::vector<UpdateRecord> updates;
+  /// Seeded methods only: what the relocalizer answered from the first scan.
+  int seed_hypotheses = -1;        ///< -1 for methods without a relocalizer
+  bool seed_localized = false;     ///< it called itself localized
+  double seed_best_error_xy_m = -1.0;  ///< its best hypothesis's distance to the truth [m]; -1 without one
 };
 
 /// Runs worlds x lidars x methods x trials. Each trial is simulated once and replayed for

@@ -5,15 +5,29 @@
 
 namespace krp {
 
-std::vector<std::string> methodNames() { return {"uniform-mcl", "amcl-kld", "amcl-kld-50k"}; }
+std::vector<std::string> methodNames() {
+  return {"uniform-mcl", "amcl-kld", "amcl-kld-50k", "seeded", "seeded-no-uniform"};
+}
 
-std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& s) {
+bool methodNeedsModels(const std::string& name) { return name == "seeded" || name == "seeded-no-uniform"; }
+
+std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& s,
+                                                     std::shared_ptr<const Relocalizer> relocalizer) {
   if (name == "uniform-mcl") return std::make_shared<UniformInitializer>(s.uniform);
   if (name == "amcl-kld") return std::make_shared<AmclKldInitializer>(s.amcl, name);
   if (name == "amcl-kld-50k") {
     AmclKldParams p = s.amcl;
     p.max_particles = s.amcl_high_max_particles;
     return std::make_shared<AmclKldInitializer>(p, name);
+  }
+  if (methodNeedsModels(name)) {
+    if (!relocalizer) throw InputError("method '" + name + "'", "needs trained models (a models folder with manifest.json)");
+    SeededInitParams p = s.seeded;
+    p.fallback = s.uniform;
+    if (name == "seeded-no-uniform") p.uniform_fraction = 0.0;
+    return std::make_shared<SeededInitializer>(
+        [relocalizer](const mrpt::obs::CObservation2DRangeScan& scan) { return relocalizer->relocalize(scan).ranking; },
+        p, name);
   }
   std::string known;
   for (const auto& n : methodNames()) known += (known.empty() ? "" : ", ") + n;

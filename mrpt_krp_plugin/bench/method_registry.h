@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "mrpt_krp_plugin/filter/amcl_kld_initializer.h"
+#include "mrpt_krp_plugin/filter/seeded_initializer.h"
 #include "mrpt_krp_plugin/filter/uniform_initializer.h"
+#include "mrpt_krp_plugin/relocalize/relocalizer.h"
 
 namespace krp {
 
@@ -15,12 +17,21 @@ struct MethodSettings {
   UniformInitParams uniform;
   AmclKldParams amcl;
   std::size_t amcl_high_max_particles = 50000;  ///< `amcl-kld-50k`: amcl with a raised max
+  SeededInitParams seeded;
+  RelocalizerParams relocalizer;
+  /// The seeded methods read `<models_root>/<world name>/manifest.json` (krp-train-map's output).
+  std::string models_root = "models";
 };
 
-/// The method names: `uniform-mcl`, `amcl-kld`, `amcl-kld-50k`.
+/// The method names: `uniform-mcl`, `amcl-kld`, `amcl-kld-50k`, `seeded`, `seeded-no-uniform`.
 std::vector<std::string> methodNames();
 
-/// A fresh initializer for a method; InputError listing the names for an unknown one.
-std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& settings);
+/// Whether the method needs trained models (a Relocalizer).
+bool methodNeedsModels(const std::string& name);
+
+/// A fresh initializer for a method; InputError listing the names for an unknown one, or for a
+/// seeded method without a relocalizer.
+std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& settings,
+                                                     std::shared_ptr<const Relocalizer> relocalizer = nullptr);
 
 }  // namespace krp

@@ -42,7 +42,7 @@ Ranking rankHypotheses(std::vector<PoseHypothesis> candidates, const HypothesisR
   std::ostringstream why;
   if (r.hypotheses.empty()) {
     if (proposed == 0)
-      why << "no hypothesis: the keypoint model found no usable keypoints";
+      why << "no hypothesis: no detected keypoints aligned with their landmarks";
     else
       why << "no hypothesis explains the scan: best fit " << best_rejected_fit << " < " << params.min_fit_fraction;
   } else if (r.hypotheses.front().confidence < params.min_confidence) {

@@ -57,7 +57,12 @@ TEST(Uniform, SizesByFreeAreaWithinBounds) {
 
 TEST(MethodRegistry, KnowsItsMethodsAndRejectsOthers) {
   MethodSettings s;
-  for (const auto& name : methodNames()) EXPECT_EQ(makeInitializer(name, s)->name(), name);
+  for (const auto& name : methodNames()) {
+    if (methodNeedsModels(name))
+      EXPECT_THROW(makeInitializer(name, s), InputError) << name << " without models";
+    else
+      EXPECT_EQ(makeInitializer(name, s)->name(), name);
+  }
   EXPECT_THROW(makeInitializer("magic", s), InputError);
 }
 

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/relocalize/relocalization_output.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "mrpt_krp_plugin/common/png_file.h"
+#include "mrpt_krp_plugin/map/grid_image.h"
+
+namespace krp {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+// Drawing: an arrow this long stands for a pose, whatever the map's resolution [m].
+constexpr double kArrowLengthM = 1.0;
+
+std::string zoneName(int zone, const std::vector<std::string>& names) {
+  return zone >= 0 && zone < static_cast<int>(names.size()) ? names[zone] : "?";
+}
+
+void drawPose(cv::Mat& img, const mrpt::maps::COccupancyGridMap2D& map, const mrpt::math::TPose2D& pose,
+              const cv::Scalar& colour, double std_m) {
+  const cv::Point a = worldToPixel(map, {pose.x, pose.y});
+  const cv::Point b =
+      worldToPixel(map, {pose.x + kArrowLengthM * std::cos(pose.phi), pose.y + kArrowLengthM * std::sin(pose.phi)});
+  const int thickness = std::max(1, img.cols / 500);
+  cv::arrowedLine(img, a, b, colour, thickness, cv::LINE_AA, 0, 0.3);
+  if (std_m > 0) cv::circle(img, a, std::max(2, static_cast<int>(std_m / map.getResolution())), colour, thickness);
+}
+
+}  // namespace
+
+nlohmann::json relocalizationJson(const RelocalizationResult& r, const std::vector<std::string>& zone_names) {
+  nlohmann::json j;
+  j["localized"] = r.ranking.localized;
+  j["reason"] = r.ranking.reason;
+  for (size_t z = 0; z < r.zone_probabilities.size(); ++z) j["zone_probabilities"][zoneName(int(z), zone_names)] = r.zone_probabilities[z];
+  j["detections"] = r.detections;
+  j["candidates"] = r.candidates;
+  j["hypotheses"] = nlohmann::json::array();
+  for (const auto& h : r.ranking.hypotheses) {
+    std::vector<double> cov;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) cov.push_back(h.cov(i, k));
+    j["hypotheses"].push_back({{"x_m", h.pose.x}, {"y_m", h.pose.y}, {"yaw_deg", h.pose.phi * kRadToDeg},
+                               {"covariance_x_y_yaw", cov}, {"zone", zoneName(h.zone, zone_names)},
+                               {"zone_probability", h.zone_probability}, {"keypoint_inliers", h.keypoint_inliers},
+                               {"alignment_rms_m", h.alignment_rms_m}, {"fit_fraction", h.fit_fraction},
+                               {"confidence", h.confidence}});
+  }
+  const auto& t = r.times;
+  j["times_ms"] = {{"submap", t.submap_ms}, {"classifier", t.classifier_ms}, {"keypoints", t.keypoints_ms},
+                   {"alignment", t.alignment_ms}, {"verification", t.verification_ms}, {"total", t.total_ms}};
+  return j;
+}
+
+std::string relocalizationText(const RelocalizationResult& r, const std::vector<std::string>& zone_names) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(3);
+  o << (r.ranking.localized ? "localized" : "NOT localized: " + r.ranking.reason) << "\nzones:";
+  for (size_t z = 0; z < r.zone_probabilities.size(); ++z) o << " " << zoneName(int(z), zone_names) << " " << r.zone_probabilities[z];
+  o << "\n" << r.detections << " detection(s), " << r.candidates << " aligned candidate(s), " << r.ranking.hypotheses.size()
+    << " hypothesis(es) after verification, " << r.times.total_ms << " ms\n";
+  for (size_t i = 0; i < r.ranking.hypotheses.size(); ++i) {
+    const auto& h = r.ranking.hypotheses[i];
+    o << "  #" << i + 1 << " x " << h.pose.x << " m, y " << h.pose.y << " m, yaw " << h.pose.phi * kRadToDeg
+      << " deg; std " << std::sqrt(h.cov(0, 0)) << " / " << std::sqrt(h.cov(1, 1)) << " m, "
+      << std::sqrt(h.cov(2, 2)) * kRadToDeg << " deg; zone " << zoneName(h.zone, zone_names) << "; fit "
+      << h.fit_fraction << "; confidence " << h.confidence << "\n";
+  }
+  return o.str();
+}
+
+void writeHypothesesPng(const mrpt::maps::COccupancyGridMap2D& map, const RelocalizationResult& r,
+                        const std::optional<mrpt::math::TPose2D>& truth, const std::string& png_path) {
+  cv::Mat img;
+  cv::cvtColor(gridToGrey(map), img, cv::COLOR_GRAY2BGR);
+  const cv::Scalar best(40, 170, 40), other(0, 140, 255), truth_colour(220, 80, 0);
+  for (size_t i = r.ranking.hypotheses.size(); i-- > 0;) {
+    const auto& h = r.ranking.hypotheses[i];
+    drawPose(img, map, h.pose, i == 0 ? best : other, std::sqrt(std::max(h.cov(0, 0), h.cov(1, 1))));
+  }
+  if (truth) drawPose(img, map, *truth, truth_colour, 0.0);
+  writePngAtomically(png_path, img);
+}
+
+}  // namespace krp
