@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
 #include "mrpt_krp_plugin/common/random.h"
 
 namespace krp {
@@ -18,7 +20,8 @@ double threadCpuSeconds() {
 MclLocalizer::MclLocalizer(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
                            std::shared_ptr<ParticleInitializer> init, MclParams params)
     // The filter needs its own copy: MRPT caches the likelihood field inside the map.
-    : map_(std::make_shared<mrpt::maps::COccupancyGridMap2D>(*map)), init_(std::move(init)), params_(params) {
+    : map_(std::make_shared<mrpt::maps::COccupancyGridMap2D>(*map)), init_(std::move(init)), params_(params),
+      kidnap_(params.kidnap) {
   auto& lo = map_->likelihoodOptions;
   lo.likelihoodMethod = mrpt::maps::COccupancyGridMap2D::lmLikelihoodField_Thrun;
   lo.LF_decimation = static_cast<uint32_t>(params_.sensor.decimation);
@@ -33,6 +36,7 @@ MclLocalizer::MclLocalizer(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D
   o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
   o.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
   o.BETA = 0.0;  // never resample inside executeOn: see the class comment
+  if (params_.kidnap.enabled) fit_scorer_ = std::make_unique<ScanFitScorer>(*map_);
 }
 
 void MclLocalizer::resampleSystematicIfNeeded() {
@@ -59,10 +63,14 @@ void MclLocalizer::resampleSystematicIfNeeded() {
 
 MclEstimate MclLocalizer::update(const RawlogStep& step) {
   const double t0 = threadCpuSeconds();
+  MclEstimate e;
   if (!initialized_) {
-    reseedMrptGlobalRandom(params_.seed);
+    reseedMrptGlobalRandom(params_.seed + static_cast<uint32_t>(initializations_));
     init_->initialize(pf_, filter_.m_options, *map_, *step.observations);
     initialized_ = true;
+    ++initializations_;
+    e.initialized = true;
+    kidnap_.reset();
   }
   auto action = step.action;
   if (!action) {
@@ -76,10 +84,16 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   filter_.executeOn(pf_, action.get(), step.observations.get(), &stats);
   if (!filter_.m_options.adaptiveSampleSize) resampleSystematicIfNeeded();
 
-  MclEstimate e;
   const auto [cov, mean] = pf_.getCovarianceAndMean();
   e.cov = cov;
   e.mean = mean.asTPose();
+  if (fit_scorer_) {
+    if (const auto scan = step.observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>()) {
+      e.fit_fraction = fit_scorer_->score(*scan, e.mean).fit_fraction;
+      e.kidnap_detected = kidnap_.update(e.fit_fraction);
+      if (e.kidnap_detected) initialized_ = false;
+    }
+  }
   e.particles = pf_.size();
   e.cpu_s = threadCpuSeconds() - t0;
   return e;

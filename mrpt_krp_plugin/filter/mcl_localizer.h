@@ -7,7 +7,9 @@
 
 #include <memory>
 
+#include "mrpt_krp_plugin/filter/kidnap_detector.h"
 #include "mrpt_krp_plugin/filter/particle_initializer.h"
+#include "mrpt_krp_plugin/relocalize/scan_fit.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 
 namespace krp {
@@ -25,6 +27,7 @@ struct MclParams {
   SensorModelParams sensor;
   double resample_below_ess = 0.5;  ///< systematic resampling when ESS/N drops below this [0..1]
   uint32_t seed = 1;                ///< MRPT's global generator is reseeded with this
+  KidnapDetectorParams kidnap;      ///< re-initialize by itself when the tracked pose stops fitting
 };
 
 /// One filter update's outcome.
@@ -33,6 +36,9 @@ struct MclEstimate {
   mrpt::math::CMatrixDouble33 cov;
   std::size_t particles = 0;
   double cpu_s = 0.0;  ///< thread CPU time of this update (localization code only) [s]
+  double fit_fraction = -1.0;  ///< scan returns explained at the mean (kidnap detection on; else -1)
+  bool initialized = false;    ///< the initializer ran at this update (the first, or after a kidnap)
+  bool kidnap_detected = false;  ///< this update completed a kidnap: the next one re-initializes
 };
 
 /// MRPT's CMonteCarloLocalization2D driven step by step, with the start chosen by a
@@ -47,7 +53,8 @@ class MclLocalizer {
   MclLocalizer(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map, std::shared_ptr<ParticleInitializer> init,
                MclParams params = {});
 
-  /// First call initializes from the step's observation, then updates with it.
+  /// First call initializes from the step's observation, then updates with it; so does the
+  /// call after a detected kidnap.
   MclEstimate update(const RawlogStep& step);
 
   std::size_t particleCount() const { return pf_.size(); }
@@ -62,7 +69,10 @@ class MclLocalizer {
   mrpt::slam::CMonteCarloLocalization2D pf_;
   mrpt::bayes::CParticleFilter filter_;
   bool initialized_ = false;
+  int initializations_ = 0;
   uint64_t resample_draws_ = 0;
+  std::unique_ptr<ScanFitScorer> fit_scorer_;  ///< only with kidnap detection
+  KidnapDetector kidnap_;
 };
 
 /// Thread CPU time [s].

@@ -59,3 +59,47 @@ TEST(SystemSeededMcl, ConvergesFromTheFirstScanWithFewParticles) {
 
 }  // namespace
 }  // namespace krp
+
+namespace krp {
+namespace {
+
+TEST(SystemSeededMcl, DetectsAKidnapAndRecoversByReseeding) {
+  const auto room = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  TrialParams tp;
+  tp.steps = 12;
+  const Trial before = generateTrial(*room, lidarProfileByName("omni_12m"), tp, 3);
+  const Trial after = generateTrial(*room, lidarProfileByName("omni_12m"), tp, 4);  // carried elsewhere
+  ASSERT_GT(std::hypot(before.truth.back().x - after.truth[0].x, before.truth.back().y - after.truth[0].y), 1.0);
+  mrpt::math::TPose2D current;  // what a perfect relocalizer would answer for the current scan
+  auto init = std::make_shared<SeededInitializer>([&](const auto&) {
+    Ranking r;
+    r.hypotheses = {hypothesisAt(current, 1.0)};
+    return r;
+  });
+  MclParams mp;
+  mp.kidnap.enabled = true;
+  MclLocalizer loc(room, init, mp);
+  const auto steps_before = trialToSteps(before), steps_after = trialToSteps(after);
+  int initializations = 0, kidnap_at = -1, reinit_at = -1;
+  for (size_t i = 0; i < steps_before.size(); ++i) {
+    current = before.truth[i];
+    const auto e = loc.update(steps_before[i]);
+    initializations += e.initialized;
+    EXPECT_FALSE(e.kidnap_detected) << "false alarm at update " << i << ", fit " << e.fit_fraction;
+  }
+  MclEstimate last;
+  for (size_t i = 0; i < steps_after.size(); ++i) {
+    current = after.truth[i];
+    last = loc.update(steps_after[i]);
+    if (last.kidnap_detected && kidnap_at < 0) kidnap_at = static_cast<int>(i);
+    if (last.initialized && reinit_at < 0) reinit_at = static_cast<int>(i);
+  }
+  EXPECT_EQ(initializations, 1);
+  ASSERT_GE(kidnap_at, 0) << "the kidnap went unnoticed";
+  EXPECT_LE(kidnap_at, 4) << "three bad updates in a row should be enough";
+  EXPECT_EQ(reinit_at, kidnap_at + 1);
+  EXPECT_LT(std::hypot(last.mean.x - after.truth.back().x, last.mean.y - after.truth.back().y), 0.2);
+}
+
+}  // namespace
+}  // namespace krp
