@@ -101,7 +101,7 @@ static int run(int argc, char** argv) {
                {{"ini", "FILE", "INI file with a [localize] section", ""},
                 {"map", "FILE", "map (.yaml, .gridmap[.gz], .bt/.ot)", ""},
                 {"rawlog", "FILE", "MRPT rawlog with odometry + 2D scans", ""},
-                {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded or seeded-no-uniform", "amcl-kld"},
+                {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform or global-matcher", "amcl-kld"},
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
                 {"single-scan", "STEP", "relocalize from this rawlog step's scan only: print the hypotheses, write "
                  "hypotheses.json and hypotheses.png (-1 = run the filter)", "-1"},
@@ -142,7 +142,9 @@ static int run(int argc, char** argv) {
                                                    " rawlog steps");
   }
   if (single_scan >= 0) return relocalizeOneScan(*relocalizer, *map.grid, steps, truth, single_scan, s["out_dir"]);
-  auto init = krp::makeInitializer(s["method"], ms, relocalizer);
+  krp::MethodResources resources{relocalizer, nullptr};
+  if (krp::methodNeedsMatcher(s["method"])) resources.matcher = std::make_shared<krp::MatcherRelocalizer>(*map.grid, ms.matcher);
+  auto init = krp::makeInitializer(s["method"], ms, resources);
   krp::MclParams mp;
   mp.seed = static_cast<uint32_t>(toNumber(s, "seed"));
   krp::MclLocalizer loc(map.grid, init, mp);

@@ -20,30 +20,32 @@ constexpr uint64_t kWorldStride = 1000000, kLidarStride = 10000, kFilterStream =
 
 std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
   const auto known = methodNames();
-  bool need_models = false;
+  bool need_models = false, need_matcher = false;
   for (const auto& m : cfg.methods) {  // fail early on a bad name
     if (std::find(known.begin(), known.end(), m) == known.end()) makeInitializer(m, cfg.method_settings);
     need_models = need_models || methodNeedsModels(m);
+    need_matcher = need_matcher || methodNeedsMatcher(m);
   }
   struct Job {
     World world;
     std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map;
     LidarProfile lidar;
     size_t world_index, lidar_index;
-    std::shared_ptr<const Relocalizer> relocalizer;
+    MethodResources resources;
   };
   std::vector<Job> jobs;
   for (size_t wi = 0; wi < cfg.world_files.size(); ++wi) {
     const World w = readWorld(cfg.world_files[wi]);
     const auto map = loadOccupancyMap(w.map_path).grid;
     const auto lidars = cfg.lidars.empty() ? std::vector<std::string>{w.default_lidar_profile} : cfg.lidars;
-    std::shared_ptr<const Relocalizer> relocalizer;
+    MethodResources res;
     if (need_models) {
       const auto models = (std::filesystem::path(cfg.method_settings.models_root) / w.name).string();
-      relocalizer = std::make_shared<Relocalizer>(models, *map, cfg.method_settings.relocalizer);
-      log << "krp-bench: " << w.name << ": models " << models << " (lidar " << relocalizer->manifest().lidar_name << ")\n";
+      res.relocalizer = std::make_shared<Relocalizer>(models, *map, cfg.method_settings.relocalizer);
+      log << "krp-bench: " << w.name << ": models " << models << " (lidar " << res.relocalizer->manifest().lidar_name << ")\n";
     }
-    for (size_t li = 0; li < lidars.size(); ++li) jobs.push_back({w, map, w.lidar(lidars[li]), wi, li, relocalizer});
+    if (need_matcher) res.matcher = std::make_shared<MatcherRelocalizer>(*map, cfg.method_settings.matcher);
+    for (size_t li = 0; li < lidars.size(); ++li) jobs.push_back({w, map, w.lidar(lidars[li]), wi, li, res});
   }
   log << "krp-bench: base seed " << cfg.seed << "; " << jobs.size() << " world/lidar pair(s) x " << cfg.methods.size()
       << " method(s) x " << cfg.trials << " trial(s)\n";
@@ -70,7 +72,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         mp.seed = static_cast<uint32_t>(filter_seed);
         MethodSettings ms = cfg.method_settings;
         ms.seeded.seed = filter_seed;
-        const auto init = makeInitializer(method, ms, job.relocalizer);
+        const auto init = makeInitializer(method, ms, job.resources);
         MclLocalizer loc(job.map, init, mp);
         TrialRecord rec{job.world.name, job.lidar.name, method, t, trial_seed, filter_seed, free_m2, {}, {}};
         for (size_t i = 0; i < steps.size(); ++i)

@@ -6,13 +6,14 @@
 namespace krp {
 
 std::vector<std::string> methodNames() {
-  return {"uniform-mcl", "amcl-kld", "amcl-kld-50k", "seeded", "seeded-no-uniform"};
+  return {"uniform-mcl", "amcl-kld", "amcl-kld-50k", "seeded", "seeded-no-uniform", "global-matcher"};
 }
 
 bool methodNeedsModels(const std::string& name) { return name == "seeded" || name == "seeded-no-uniform"; }
+bool methodNeedsMatcher(const std::string& name) { return name == "global-matcher"; }
 
 std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& s,
-                                                     std::shared_ptr<const Relocalizer> relocalizer) {
+                                                     const MethodResources& resources) {
   if (name == "uniform-mcl") return std::make_shared<UniformInitializer>(s.uniform);
   if (name == "amcl-kld") return std::make_shared<AmclKldInitializer>(s.amcl, name);
   if (name == "amcl-kld-50k") {
@@ -20,14 +21,21 @@ std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, co
     p.max_particles = s.amcl_high_max_particles;
     return std::make_shared<AmclKldInitializer>(p, name);
   }
+  SeededInitParams seeded = s.seeded;
+  seeded.fallback = s.uniform;
   if (methodNeedsModels(name)) {
+    const auto relocalizer = resources.relocalizer;
     if (!relocalizer) throw InputError("method '" + name + "'", "needs trained models (a models folder with manifest.json)");
-    SeededInitParams p = s.seeded;
-    p.fallback = s.uniform;
-    if (name == "seeded-no-uniform") p.uniform_fraction = 0.0;
+    if (name == "seeded-no-uniform") seeded.uniform_fraction = 0.0;
     return std::make_shared<SeededInitializer>(
         [relocalizer](const mrpt::obs::CObservation2DRangeScan& scan) { return relocalizer->relocalize(scan).ranking; },
-        p, name);
+        seeded, name);
+  }
+  if (methodNeedsMatcher(name)) {
+    const auto matcher = resources.matcher;
+    if (!matcher) throw InputError("method '" + name + "'", "needs the map's global matcher");
+    return std::make_shared<SeededInitializer>(
+        [matcher](const mrpt::obs::CObservation2DRangeScan& scan) { return matcher->relocalize(scan); }, seeded, name);
   }
   std::string known;
   for (const auto& n : methodNames()) known += (known.empty() ? "" : ", ") + n;

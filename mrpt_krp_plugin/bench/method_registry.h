@@ -8,6 +8,7 @@
 #include "mrpt_krp_plugin/filter/amcl_kld_initializer.h"
 #include "mrpt_krp_plugin/filter/seeded_initializer.h"
 #include "mrpt_krp_plugin/filter/uniform_initializer.h"
+#include "mrpt_krp_plugin/relocalize/matcher_relocalizer.h"
 #include "mrpt_krp_plugin/relocalize/relocalizer.h"
 
 namespace krp {
@@ -21,17 +22,28 @@ struct MethodSettings {
   RelocalizerParams relocalizer;
   /// The seeded methods read `<models_root>/<world name>/manifest.json` (krp-train-map's output).
   std::string models_root = "models";
+  MatcherRelocalizerParams matcher;
 };
 
-/// The method names: `uniform-mcl`, `amcl-kld`, `amcl-kld-50k`, `seeded`, `seeded-no-uniform`.
+/// What some methods need built once per map: the learned relocalizer (seeded methods) and the
+/// global correlative matcher (`global-matcher`).
+struct MethodResources {
+  std::shared_ptr<const Relocalizer> relocalizer;
+  std::shared_ptr<const MatcherRelocalizer> matcher;
+};
+
+/// The method names: `uniform-mcl`, `amcl-kld`, `amcl-kld-50k`, `seeded`, `seeded-no-uniform`,
+/// `global-matcher`.
 std::vector<std::string> methodNames();
 
 /// Whether the method needs trained models (a Relocalizer).
 bool methodNeedsModels(const std::string& name);
+/// Whether the method needs the global matcher.
+bool methodNeedsMatcher(const std::string& name);
 
 /// A fresh initializer for a method; InputError listing the names for an unknown one, or for a
-/// seeded method without a relocalizer.
+/// method whose resources are missing.
 std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& settings,
-                                                     std::shared_ptr<const Relocalizer> relocalizer = nullptr);
+                                                     const MethodResources& resources = {});
 
 }  // namespace krp

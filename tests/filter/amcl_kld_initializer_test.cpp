@@ -58,7 +58,7 @@ TEST(Uniform, SizesByFreeAreaWithinBounds) {
 TEST(MethodRegistry, KnowsItsMethodsAndRejectsOthers) {
   MethodSettings s;
   for (const auto& name : methodNames()) {
-    if (methodNeedsModels(name))
+    if (methodNeedsModels(name) || methodNeedsMatcher(name))
       EXPECT_THROW(makeInitializer(name, s), InputError) << name << " without models";
     else
       EXPECT_EQ(makeInitializer(name, s)->name(), name);

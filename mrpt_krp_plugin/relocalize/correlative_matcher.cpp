@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "mrpt_krp_plugin/submap/scan_beams.h"
+
+namespace krp {
+
+namespace {
+
+struct Node {
+  int cx, cy, level;
+  double bound;
+};
+
+}  // namespace
+
+CorrelativeMatcher::CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& map, CorrelativeMatcherParams params)
+    : params_(params), x_min_(map.getXMin()), y_min_(map.getYMin()) {
+  const double res = params_.resolution_m;
+  const int w = std::max(1, static_cast<int>(std::ceil((map.getXMax() - x_min_) / res)));
+  const int h = std::max(1, static_cast<int>(std::ceil((map.getYMax() - y_min_) / res)));
+  // Obstacles and free space resampled onto the search grid (getPos is p(free)).
+  cv::Mat not_obstacle(h, w, CV_8U, cv::Scalar(255));
+  free_ = cv::Mat::zeros(h, w, CV_8U);
+  for (int cy = 0; cy < map.getSizeY(); ++cy) {
+    for (int cx = 0; cx < map.getSizeX(); ++cx) {
+      const int gx = std::min(w - 1, static_cast<int>((map.idx2x(cx) - x_min_) / res));
+      const int gy = std::min(h - 1, static_cast<int>((map.idx2y(cy) - y_min_) / res));
+      const double p_free = map.getCell(cx, cy);
+      if (1.0 - p_free > params_.min_occupancy) not_obstacle.at<uint8_t>(gy, gx) = 0;
+      if (p_free >= params_.min_freeness) free_.at<uint8_t>(gy, gx) = 1;
+    }
+  }
+  free_.setTo(0, not_obstacle == 0);  // a cell holding any obstacle is no place to stand
+  cv::Mat dist;
+  cv::distanceTransform(not_obstacle, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  dist *= res;
+  cv::Mat score;
+  cv::multiply(dist, dist, score, -0.5 / (params_.hit_sigma_m * params_.hit_sigma_m));
+  cv::exp(score, score);
+  levels_.push_back(score);
+  for (int lvl = 1; lvl <= params_.depth; ++lvl) {
+    // Window doubling: the max over [x, x + 2s) is the max of two windows of s.
+    const int s = 1 << (lvl - 1);
+    const cv::Mat& prev = levels_.back();
+    cv::Mat next = prev.clone();
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        float m = prev.at<float>(y, x);
+        if (x + s < w) m = std::max(m, prev.at<float>(y, x + s));
+        if (y + s < h) m = std::max(m, prev.at<float>(y + s, x));
+        if (x + s < w && y + s < h) m = std::max(m, prev.at<float>(y + s, x + s));
+        next.at<float>(y, x) = m;
+      }
+    levels_.push_back(next);
+  }
+}
+
+double CorrelativeMatcher::bound(const Rotation& r, int cx, int cy, int level) const {
+  ++nodes_scored_;
+  const cv::Mat& g = levels_[level];
+  double sum = 0;
+  for (const auto& o : r.offsets) {
+    const int x = cx + o.x, y = cy + o.y;
+    // A node's window may start left of or below the grid: the part inside still bounds it.
+    const int span = (1 << level) - 1;
+    if (x + span < 0 || y + span < 0 || x >= g.cols || y >= g.rows) continue;
+    sum += g.at<float>(std::max(y, 0), std::max(x, 0));
+  }
+  return sum / static_cast<double>(r.offsets.size());
+}
+
+std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservation2DRangeScan& scan) const {
+  nodes_scored_ = 0;
+  const auto beams = scanBeams(scan);
+  std::vector<mrpt::math::TPoint2D> points;  // robot frame
+  const mrpt::poses::CPose2D sensor(scan.sensorPose);
+  for (const auto& b : beams.beams) {
+    if (!b.hit) continue;
+    const auto p = sensor + mrpt::poses::CPose2D(b.range_m * std::cos(b.angle_rad), b.range_m * std::sin(b.angle_rad), 0);
+    points.emplace_back(p.x(), p.y());
+  }
+  if (points.size() < 3) return {};
+  if (static_cast<int>(points.size()) > params_.max_points) {
+    std::vector<mrpt::math::TPoint2D> kept;
+    for (int i = 0; i < params_.max_points; ++i) kept.push_back(points[i * points.size() / params_.max_points]);
+    points.swap(kept);
+  }
+  const double res = params_.resolution_m;
+  std::vector<Rotation> rotations;
+  const int n_rot = std::max(1, static_cast<int>(std::lround(360.0 / params_.angular_step_deg)));
+  for (int k = 0; k < n_rot; ++k) {
+    Rotation r{-M_PI + 2.0 * M_PI * k / n_rot, {}};
+    const double c = std::cos(r.phi), s = std::sin(r.phi);
+    for (const auto& p : points)
+      r.offsets.emplace_back(static_cast<int>(std::floor(0.5 + (c * p.x - s * p.y) / res)),
+                             static_cast<int>(std::floor(0.5 + (s * p.x + c * p.y) / res)));
+    rotations.push_back(std::move(r));
+  }
+
+  std::vector<MatchSolution> out;
+  const int top = params_.depth, step = 1 << top;
+  for (int sol = 0; sol < params_.solutions; ++sol) {
+    auto excluded = [&](int cx, int cy) {
+      const double x = x_min_ + (cx + 0.5) * res, y = y_min_ + (cy + 0.5) * res;
+      for (const auto& o : out)
+        if (std::hypot(o.pose.x - x, o.pose.y - y) < params_.exclusion_m) return true;
+      return false;
+    };
+    MatchSolution best{{}, params_.min_score};
+    bool found = false;
+    for (const auto& rot : rotations) {
+      std::vector<Node> roots;
+      for (int cy = 0; cy < free_.rows; cy += step)
+        for (int cx = 0; cx < free_.cols; cx += step) roots.push_back({cx, cy, top, bound(rot, cx, cy, top)});
+      std::sort(roots.begin(), roots.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
+      // Depth-first, best child first; a node whose bound cannot beat the best is pruned.
+      std::function<void(const Node&)> visit = [&](const Node& n) {
+        if (n.bound <= best.score) return;
+        if (n.level == 0) {
+          if (n.cx >= free_.cols || n.cy >= free_.rows || !robotCellFree(n.cx, n.cy) || excluded(n.cx, n.cy)) return;
+          best = {{x_min_ + (n.cx + 0.5) * res, y_min_ + (n.cy + 0.5) * res, rot.phi}, n.bound};
+          found = true;
+          return;
+        }
+        const int half = 1 << (n.level - 1);
+        std::vector<Node> children;
+        for (int dy : {0, half})
+          for (int dx : {0, half})
+            if (n.cx + dx < free_.cols && n.cy + dy < free_.rows)
+              children.push_back({n.cx + dx, n.cy + dy, n.level - 1, bound(rot, n.cx + dx, n.cy + dy, n.level - 1)});
+        std::sort(children.begin(), children.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
+        for (const auto& c : children) visit(c);
+      };
+      for (const auto& r : roots) {
+        if (r.bound <= best.score) break;
+        visit(r);
+      }
+    }
+    if (!found) break;
+    out.push_back(best);
+  }
+  return out;
+}
+
+}  // namespace krp

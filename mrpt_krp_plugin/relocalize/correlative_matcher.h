@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/math/TPose2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <opencv2/core.hpp>
+
+#include <vector>
+
+namespace krp {
+
+struct CorrelativeMatcherParams {
+  double resolution_m = 0.1;       ///< search grid cell; the map is resampled to it [m]
+  double angular_step_deg = 1.0;   ///< heading step of the exhaustive search [deg]
+  double hit_sigma_m = 0.1;        ///< a return scores exp(-d^2 / 2 sigma^2) at distance d from an obstacle [m]
+  int depth = 6;                   ///< branch-and-bound levels: the coarsest node covers 2^depth cells a side
+  int max_points = 180;            ///< returns used, evenly decimated
+  double min_score = 0.4;          ///< solutions scoring below this are not reported [0..1]
+  int solutions = 2;               ///< best, then the best at least `exclusion_m` from every earlier one
+  double exclusion_m = 1.0;        ///< [m]
+  double min_occupancy = 0.65;     ///< map cells above this are obstacles [0..1]
+  double min_freeness = 0.6;       ///< the robot's own cell must be at least this free [0..1]
+};
+
+struct MatchSolution {
+  mrpt::math::TPose2D pose;  ///< robot pose in the map frame, on the search grid
+  double score = 0.0;        ///< mean return score [0..1]
+};
+
+/// The global scan matcher a user would otherwise reach for: an exhaustive multi-resolution
+/// correlative search over every free cell and heading of the map, made exact and fast by
+/// branch and bound (as Cartographer's global localization does). Its second solution, found
+/// away from the first, says how ambiguous the scan is.
+class CorrelativeMatcher {
+ public:
+  CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& map, CorrelativeMatcherParams params = {});
+
+  /// Best first; empty when nothing scores min_score.
+  std::vector<MatchSolution> match(const mrpt::obs::CObservation2DRangeScan& scan) const;
+
+  /// Nodes whose bound was computed in the last match() (a measure of its cost).
+  long long lastNodesScored() const { return nodes_scored_; }
+
+ private:
+  struct Rotation {
+    double phi;
+    std::vector<cv::Point> offsets;  ///< each return's cell offset from the robot's cell
+  };
+  double bound(const Rotation& r, int cx, int cy, int level) const;
+  bool robotCellFree(int cx, int cy) const { return free_.at<uint8_t>(cy, cx) != 0; }
+
+  CorrelativeMatcherParams params_;
+  std::vector<cv::Mat> levels_;  ///< levels_[h](y, x): max of the score grid over [x, x + 2^h) x [y, y + 2^h)
+  cv::Mat free_;                 ///< CV_8U, robot may stand here
+  double x_min_ = 0, y_min_ = 0;
+  mutable long long nodes_scored_ = 0;
+};
+
+}  // namespace krp
