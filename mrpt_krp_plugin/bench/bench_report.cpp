@@ -29,13 +29,14 @@ std::string ratio(double v, double ref) {
   return num(v / ref, 3) + "x";
 }
 
-/// The seeded methods' first-scan relocalization, before the filter runs.
+/// The first-scan relocalization of the methods that have one (seeded, global-matcher), before the filter runs.
 std::string relocalizerTable(const std::vector<MethodSummary>& summaries, double right_within_m) {
   std::ostringstream o;
   for (const auto& s : summaries) {
     if (s.seed_localized_rate < 0) continue;
     if (o.tellp() == 0)
-      o << "Relocalizer on the first scan (seeded methods): \"localized\" is its own verdict; \"best right\" is how "
+      o << "Relocalization from the first scan (methods that seed the filter with hypotheses): \"localized\" is "
+           "the relocalizer's own verdict; \"best right\" is how "
            "often its best hypothesis was within " << right_within_m << " m of the truth, whatever the verdict.\n\n"
         << "| world | lidar | method | localized | best right |\n|---|---|---|---|---|\n";
     o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << num(100.0 * s.seed_localized_rate)

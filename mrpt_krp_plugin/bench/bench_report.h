@@ -23,7 +23,7 @@ struct MethodSummary {
   double median_final_error_m = 0.0;         ///< over all trials
   double median_final_error_converged_m = 0.0;  ///< over converged trials
   double median_final_error_phi_deg = 0.0;   ///< over converged trials
-  /// Seeded methods: the relocalizer's first-scan answer (negative for other methods).
+  /// Methods that relocalize from the first scan (seeded, global-matcher): its answer; negative for others.
   double seed_localized_rate = -1.0;    ///< it called itself localized / trials
   double seed_best_right_rate = -1.0;   ///< its best hypothesis was within max_error_xy_m of the truth / trials
 };

@@ -33,7 +33,7 @@ struct TrialRecord {
   double free_area_m2 = 0.0;
   TrialOutcome outcome;
   std::vector<UpdateRecord> updates;
-  /// Seeded methods only: what the relocalizer answered from the first scan.
+  /// Methods that relocalize from the first scan (seeded, global-matcher): what the relocalizer answered.
   int seed_hypotheses = -1;        ///< -1 for methods without a relocalizer
   bool seed_localized = false;     ///< it called itself localized
   double seed_best_error_xy_m = -1.0;  ///< its best hypothesis's distance to the truth [m]; -1 without one
