@@ -6,6 +6,7 @@
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/map/grid_image.h"
 
 namespace krp {
 
@@ -15,12 +16,10 @@ constexpr double kDegToRad = M_PI / 180.0;
 
 double clampedStd(double variance, double lo, double hi) { return std::clamp(std::sqrt(std::max(variance, 0.0)), lo, hi); }
 
-std::vector<std::pair<unsigned, unsigned>> freeCells(const mrpt::maps::COccupancyGridMap2D& map, double min_freeness) {
-  std::vector<std::pair<unsigned, unsigned>> cells;
-  for (unsigned cy = 0; cy < map.getSizeY(); ++cy)
-    for (unsigned cx = 0; cx < map.getSizeX(); ++cx)
-      if (map.getCell(cx, cy) > min_freeness) cells.emplace_back(cx, cy);  // getCell() is p(free)
-  return cells;
+std::vector<cv::Point> freeCells(const mrpt::maps::COccupancyGridMap2D& map, double min_freeness) {
+  CellClassParams p;
+  p.max_free_occupancy = 1.0 - min_freeness;
+  return maskedCells(freeMask(map, p));
 }
 
 }  // namespace
@@ -78,9 +77,9 @@ void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
       pf.m_particles[next].d = {rng.normal(h.pose.x, sx), rng.normal(h.pose.y, sy), rng.normal(h.pose.phi, sphi)};
   }
   for (; next < total; ++next) {
-    const auto& [cx, cy] = cells[static_cast<size_t>(rng.uniformInt(0, static_cast<int>(cells.size()) - 1))];
+    const auto& cell = cells[static_cast<size_t>(rng.uniformInt(0, static_cast<int>(cells.size()) - 1))];
     const double half = 0.5 * map.getResolution();
-    pf.m_particles[next].d = {map.idx2x(cx) + rng.uniform(-half, half), map.idx2y(cy) + rng.uniform(-half, half),
+    pf.m_particles[next].d = {map.idx2x(cell.x) + rng.uniform(-half, half), map.idx2y(cell.y) + rng.uniform(-half, half),
                               rng.uniform(-M_PI, M_PI)};
   }
   for (auto& p : pf.m_particles) {

@@ -49,4 +49,12 @@ cv::Mat occupiedMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClas
   return renderGrid(grid, [&](double occ) { return static_cast<uint8_t>(occ > p.min_occupied_occupancy ? 255 : 0); });
 }
 
+std::vector<cv::Point> maskedCells(const cv::Mat& mask) {
+  cv::Mat cell_rows;
+  cv::flip(mask, cell_rows, 0);  // image row 0 is the top; cell row 0 is the bottom
+  std::vector<cv::Point> cells;
+  cv::findNonZero(cell_rows, cells);
+  return cells;
+}
+
 }  // namespace krp

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <vector>
+
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/math/TPoint2D.h>
 #include <opencv2/core.hpp>
@@ -31,5 +33,9 @@ cv::Mat freeClearanceM(const mrpt::maps::COccupancyGridMap2D& grid, const CellCl
 
 /// 255 where the cell is occupied, 0 elsewhere (row 0 at the top).
 cv::Mat occupiedMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p = {});
+
+/// The map cell indices (x = column cx, y = row cy, y up as in MRPT) where a mask drawn by
+/// freeMask() or occupiedMask() is set, in MRPT's cell order (cy, then cx).
+std::vector<cv::Point> maskedCells(const cv::Mat& mask);
 
 }  // namespace krp

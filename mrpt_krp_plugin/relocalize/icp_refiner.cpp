@@ -7,13 +7,15 @@
 
 #include <cmath>
 
+#include "mrpt_krp_plugin/map/grid_image.h"
+
 namespace krp {
 
 IcpRefiner::IcpRefiner(const mrpt::maps::COccupancyGridMap2D& map, IcpRefineParams params) : params_(params) {
-  for (unsigned cy = 0; cy < map.getSizeY(); ++cy)
-    for (unsigned cx = 0; cx < map.getSizeX(); ++cx)
-      if (1.0 - map.getCell(cx, cy) > params_.min_occupancy)  // getCell() is p(free)
-        map_points_.insertPoint(static_cast<float>(map.idx2x(cx)), static_cast<float>(map.idx2y(cy)), 0.0f);
+  CellClassParams cells;
+  cells.min_occupied_occupancy = params_.min_occupancy;
+  for (const auto& c : maskedCells(occupiedMask(map, cells)))
+    map_points_.insertPoint(static_cast<float>(map.idx2x(c.x)), static_cast<float>(map.idx2y(c.y)), 0.0f);
 }
 
 mrpt::math::TPose2D IcpRefiner::refine(const mrpt::obs::CObservation2DRangeScan& scan,

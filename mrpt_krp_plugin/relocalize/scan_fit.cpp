@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mrpt_krp_plugin/map/grid_image.h"
 #include "mrpt_krp_plugin/submap/scan_beams.h"
 
 namespace krp {
@@ -16,15 +17,14 @@ namespace {
 constexpr double kMeanDistanceCapM = 1.0;
 }  // namespace
 
-// MRPT's getCell() is the probability that a cell is free.
 ScanFitScorer::ScanFitScorer(const mrpt::maps::COccupancyGridMap2D& map, ScanFitParams params)
     : params_(params), x_min_(map.getXMin()), y_min_(map.getYMin()), resolution_(map.getResolution()) {
-  const int w = static_cast<int>(map.getSizeX()), h = static_cast<int>(map.getSizeY());
-  cv::Mat not_obstacle(h, w, CV_8U, cv::Scalar(255));
-  for (int cy = 0; cy < h; ++cy)
-    for (int cx = 0; cx < w; ++cx)
-      if (1.0 - map.getCell(cx, cy) > params_.min_occupancy) not_obstacle.at<uint8_t>(cy, cx) = 0;
-  cv::distanceTransform(not_obstacle, distance_m_, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  CellClassParams cells;
+  cells.min_occupied_occupancy = params_.min_occupancy;
+  const cv::Mat not_obstacle = occupiedMask(map, cells) == 0;
+  cv::Mat by_cell_row;
+  cv::flip(not_obstacle, by_cell_row, 0);  // rows indexed by map cell y, as score() looks them up
+  cv::distanceTransform(by_cell_row, distance_m_, cv::DIST_L2, cv::DIST_MASK_PRECISE);
   distance_m_ *= resolution_;
 }
 

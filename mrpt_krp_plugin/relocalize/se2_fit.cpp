@@ -12,10 +12,7 @@ constexpr double kMinSpread = 1e-12;
 }  // namespace
 
 double residualM(const mrpt::math::TPose2D& pose, const Correspondence2D& c) {
-  const double cs = std::cos(pose.phi), sn = std::sin(pose.phi);
-  const double x = pose.x + cs * c.robot.x - sn * c.robot.y;
-  const double y = pose.y + sn * c.robot.x + cs * c.robot.y;
-  return std::hypot(x - c.map.x, y - c.map.y);
+  return (pose.composePoint(c.robot) - c.map).norm();
 }
 
 Se2Fit fitSe2(const std::vector<Correspondence2D>& corrs, const Se2FitParams& params) {

@@ -9,18 +9,13 @@
 namespace krp {
 namespace {
 
-mrpt::math::TPoint2D toMap(const mrpt::math::TPose2D& pose, const mrpt::math::TPoint2D& p) {
-  return {pose.x + std::cos(pose.phi) * p.x - std::sin(pose.phi) * p.y,
-          pose.y + std::sin(pose.phi) * p.x + std::cos(pose.phi) * p.y};
-}
-
 TEST(RansacAlignment, IgnoresOutliersAndRefitsOnInliers) {
   const mrpt::math::TPose2D truth(20.0, 8.0, -1.2);
   Rng rng(7);
   std::vector<Correspondence2D> c;
   for (int i = 0; i < 6; ++i) {  // inliers with 5 cm noise
     const mrpt::math::TPoint2D p(rng.uniform(-8, 8), rng.uniform(-8, 8));
-    auto q = toMap(truth, p);
+    auto q = truth.composePoint(p);
     c.push_back({p, {q.x + rng.normal(0, 0.05), q.y + rng.normal(0, 0.05)}, 1.0});
   }
   for (int i = 0; i < 5; ++i)  // outliers: keypoints named as the wrong landmark
@@ -46,7 +41,7 @@ TEST(RansacAlignment, SameResultWhateverTheSeedWhenAllPairsAreTried) {
   std::vector<Correspondence2D> c;
   for (int i = 0; i < 5; ++i) {
     const mrpt::math::TPoint2D p(i * 1.3 - 2, (i % 3) * 1.7 - 1);
-    c.push_back({p, toMap(truth, p), 1.0});
+    c.push_back({p, truth.composePoint(p), 1.0});
   }
   RansacAlignmentParams a, b;
   b.seed = 99;

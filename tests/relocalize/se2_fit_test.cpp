@@ -9,17 +9,11 @@
 namespace krp {
 namespace {
 
-/// Map point of a robot-frame point seen from `pose`.
-mrpt::math::TPoint2D toMap(const mrpt::math::TPose2D& pose, const mrpt::math::TPoint2D& p) {
-  return {pose.x + std::cos(pose.phi) * p.x - std::sin(pose.phi) * p.y,
-          pose.y + std::sin(pose.phi) * p.x + std::cos(pose.phi) * p.y};
-}
-
 TEST(Se2Fit, RecoversAnExactPoseFromTwoPoints) {
   const mrpt::math::TPose2D truth(12.0, -3.0, 2.5);
   const std::vector<mrpt::math::TPoint2D> robot = {{1.0, 2.0}, {-3.0, 0.5}};
   std::vector<Correspondence2D> c;
-  for (const auto& p : robot) c.push_back({p, toMap(truth, p), 1.0});
+  for (const auto& p : robot) c.push_back({p, truth.composePoint(p), 1.0});
   const auto fit = fitSe2(c);
   EXPECT_NEAR(fit.pose.x, truth.x, 1e-9);
   EXPECT_NEAR(fit.pose.y, truth.y, 1e-9);
@@ -45,10 +39,10 @@ TEST(Se2Fit, CovarianceGrowsWithResidualsAndShrinksWithSpread) {
   const std::vector<mrpt::math::TPoint2D> pts = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 1}, {-1, -1}};
   for (size_t i = 0; i < pts.size(); ++i) {
     const double e = (i % 2 ? 1.0 : -1.0) * 0.5;  // residuals well above the floor
-    tight.push_back({pts[i], toMap(truth, pts[i]), 1.0});
-    noisy.push_back({pts[i], {toMap(truth, pts[i]).x + e, toMap(truth, pts[i]).y - e}, 1.0});
+    tight.push_back({pts[i], truth.composePoint(pts[i]), 1.0});
+    noisy.push_back({pts[i], {truth.composePoint(pts[i]).x + e, truth.composePoint(pts[i]).y - e}, 1.0});
     const mrpt::math::TPoint2D far = {pts[i].x * 5, pts[i].y * 5};
-    spread.push_back({far, {toMap(truth, far).x + e, toMap(truth, far).y - e}, 1.0});
+    spread.push_back({far, {truth.composePoint(far).x + e, truth.composePoint(far).y - e}, 1.0});
   }
   EXPECT_GT(fitSe2(noisy).cov(0, 0), 4.0 * fitSe2(tight).cov(0, 0));
   EXPECT_LT(fitSe2(spread).cov(2, 2), 0.1 * fitSe2(noisy).cov(2, 2));
