@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
+
+#include "mrpt_krp_plugin/common/input_error.h"
+
+namespace krp {
+
+std::vector<std::string> hypothesisSourceBackends() { return {"learned", "global-matcher"}; }
+
+HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
+                                      const HypothesisSourceParams& params) {
+  if (!map) throw InputError("hypothesis source", "no map");
+  if (params.backend == "learned") {
+    if (params.models_dir.empty())
+      throw InputError("hypothesis source 'learned'", "needs a models folder (manifest.json + ONNX models)");
+    auto relocalizer = std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned);
+    // The map is captured too: the relocalizer's verifier was built from it.
+    return [relocalizer, map](const mrpt::obs::CObservation2DRangeScan& scan) {
+      return relocalizer->relocalize(scan).ranking;
+    };
+  }
+  if (params.backend == "global-matcher") {
+    auto matcher = std::make_shared<const MatcherRelocalizer>(*map, params.matcher);
+    return [matcher, map](const mrpt::obs::CObservation2DRangeScan& scan) { return matcher->relocalize(scan); };
+  }
+  std::string known;
+  for (const auto& b : hypothesisSourceBackends()) known += (known.empty() ? "" : ", ") + b;
+  throw InputError("hypothesis source", "unknown backend '" + params.backend + "' (known: " + known + ")");
+}
+
+}  // namespace krp

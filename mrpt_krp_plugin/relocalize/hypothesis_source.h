@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include "mrpt_krp_plugin/relocalize/hypothesis_ranking.h"
+#include "mrpt_krp_plugin/relocalize/matcher_relocalizer.h"
+#include "mrpt_krp_plugin/relocalize/relocalizer.h"
+
+namespace krp {
+
+/// One scan -> ranked robot-pose hypotheses in the map's grid frame. Safe to call from one
+/// thread at a time; it keeps whatever it needs (map, models) alive itself.
+using HypothesisSource = std::function<Ranking(const mrpt::obs::CObservation2DRangeScan&)>;
+
+/// Where hypotheses come from, for applications that let the user choose:
+///   `learned`         the zone classifier + keypoint model of `models_dir` (Relocalizer);
+///   `global-matcher`  the exhaustive correlative matcher over the whole map (no models).
+struct HypothesisSourceParams {
+  std::string backend = "learned";
+  std::string models_dir;  ///< needed by `learned`
+  RelocalizerParams learned;
+  MatcherRelocalizerParams matcher;
+};
+
+/// The backend names accepted by makeHypothesisSource, in a stable order.
+std::vector<std::string> hypothesisSourceBackends();
+
+/// Builds the chosen backend for `map` (loading models, precomputing search grids: seconds on
+/// a large map). InputError for an unknown backend, a missing models_dir for `learned`, or
+/// models that do not fit the map.
+HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
+                                      const HypothesisSourceParams& params);
+
+}  // namespace krp

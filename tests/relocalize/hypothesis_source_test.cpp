@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <gtest/gtest.h>
+
+#include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
+#include "mrpt_krp_plugin/sim/lidar_profile.h"
+#include "mrpt_krp_plugin/sim/scan_simulator.h"
+#include "support/test_maps.h"
+
+namespace krp {
+namespace {
+
+std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> room() {
+  return std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+}
+
+TEST(HypothesisSource, GlobalMatcherNeedsNoModelsAndFindsThePose) {
+  HypothesisSourceParams p;
+  p.backend = "global-matcher";
+  const auto map = room();
+  const auto source = makeHypothesisSource(map, p);
+  Rng rng(3);
+  const mrpt::poses::CPose2D truth(5.5, 2.1, 0.8);
+  const auto scan = ScanSimulator(lidarProfileByName("omni_12m")).simulate(*map, truth, rng);
+  const Ranking r = source(*scan);
+  ASSERT_FALSE(r.hypotheses.empty());
+  EXPECT_NEAR(r.hypotheses[0].pose.x, truth.x(), 0.15);
+  EXPECT_NEAR(r.hypotheses[0].pose.y, truth.y(), 0.15);
+}
+
+TEST(HypothesisSource, LearnedWithoutModelsSaysWhatIsMissing) {
+  HypothesisSourceParams p;
+  p.backend = "learned";
+  try {
+    makeHypothesisSource(room(), p);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("models folder"), std::string::npos) << e.what();
+  }
+}
+
+TEST(HypothesisSource, UnknownBackendListsTheKnownOnes) {
+  HypothesisSourceParams p;
+  p.backend = "magic";
+  try {
+    makeHypothesisSource(room(), p);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("global-matcher"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace krp
