@@ -57,6 +57,10 @@ class MclLocalizer {
   /// call after a detected kidnap.
   MclEstimate update(const RawlogStep& step);
 
+  /// The next update runs the initializer again (a user asked to relocalize).
+  void reinitialize() { initialized_ = false; }
+  bool isInitialized() const { return initialized_; }
+
   std::size_t particleCount() const { return pf_.size(); }
   const mrpt::slam::CMonteCarloLocalization2D& particles() const { return pf_; }
 

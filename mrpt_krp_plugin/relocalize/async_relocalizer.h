@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include <condition_variable>
+#include <chrono>
 #include <cstdint>
 #include <future>
 #include <mutex>
-#include <optional>
 #include <string>
-#include <thread>
 
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include "mrpt_krp_plugin/common/latest_only_worker.h"
 #include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
 
 namespace krp {
@@ -26,8 +25,8 @@ struct RelocalizationRequest {
 struct RelocalizationReply {
   RelocalizationRequest request;
   Ranking ranking;
-  bool dropped = false;  ///< replaced by a newer request before it started: no ranking
-  std::string error;     ///< the hypothesis source threw: its message; no ranking
+  bool dropped = false;   ///< replaced by a newer request before it started: no ranking
+  std::string error;      ///< the hypothesis source threw: its message; no ranking
   double latency_ms = 0;  ///< from submit() to the answer [ms]
 };
 
@@ -36,43 +35,37 @@ struct AsyncRelocalizerStats {
 };
 
 /// Runs a hypothesis source on its own thread so that a caller's callbacks never wait for
-/// inference. At most one request waits: a newer one replaces it (the older is answered as
-/// dropped), because a relocalization from a stale scan is worth less than one from the
-/// newest. Memory and queueing delay therefore stay bounded whatever the input rate.
+/// inference. At most one request waits (LatestOnlyWorker): a relocalization from a stale
+/// scan is worth less than one from the newest, so a newer request replaces a waiting one,
+/// which is answered as dropped.
 class AsyncRelocalizer {
  public:
   using Callback = std::function<void(const RelocalizationReply&)>;
 
-  /// `on_reply` (optional) runs on the worker thread after every request, dropped ones included.
+  /// `on_reply` (optional) runs on the worker thread for every request, dropped ones included,
+  /// before its future is answered. It must not throw.
   explicit AsyncRelocalizer(HypothesisSource source, Callback on_reply = {});
-  ~AsyncRelocalizer();  ///< finishes the running request, drops the waiting one, joins
-  AsyncRelocalizer(const AsyncRelocalizer&) = delete;
-  AsyncRelocalizer& operator=(const AsyncRelocalizer&) = delete;
 
   /// Never blocks on inference. The future is answered when the request is done or dropped.
   std::shared_future<RelocalizationReply> submit(RelocalizationRequest request);
 
-  bool busy() const;  ///< a request is running or waiting
+  bool busy() const { return worker_.busy(); }  ///< a request is running or waiting
   AsyncRelocalizerStats stats() const;
 
  private:
   struct Job {
     RelocalizationRequest request;
-    std::promise<RelocalizationReply> promise;
+    std::shared_ptr<std::promise<RelocalizationReply>> promise;
     std::chrono::steady_clock::time_point submitted;
   };
-  void run();
+  void process(Job& job);
   void answer(Job& job, RelocalizationReply reply);
 
   HypothesisSource source_;
   Callback on_reply_;
-  mutable std::mutex mutex_;
-  std::condition_variable wake_;
-  std::optional<Job> waiting_;
-  bool running_job_ = false;
-  bool stopping_ = false;
-  AsyncRelocalizerStats stats_;
-  std::thread worker_;  ///< last: started after everything it uses
+  mutable std::mutex stats_mutex_;
+  uint64_t completed_ = 0, failed_ = 0;
+  LatestOnlyWorker<Job> worker_;  ///< last: its thread starts once the rest exists
 };
 
 }  // namespace krp
