@@ -14,6 +14,14 @@ mrpt::math::TPose2D OccupancyMap::toSourceFrame(const mrpt::math::TPose2D& p) co
   return {ox + c * dx - s * dy, oy + s * dx + c * dy, mrpt::math::wrapToPi(p.phi + yaw_rad)};
 }
 
+mrpt::math::TPose2D OccupancyMap::toGridFrame(const mrpt::math::TPose2D& p) const {
+  if (!grid) return p;
+  const double ox = grid->getXMin(), oy = grid->getYMin();
+  const double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
+  const double dx = p.x - ox, dy = p.y - oy;
+  return {ox + c * dx + s * dy, oy - s * dx + c * dy, mrpt::math::wrapToPi(p.phi - yaw_rad)};
+}
+
 std::size_t countFreeCells(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p) {
   std::size_t n = 0;
   for (unsigned y = 0; y < grid.getSizeY(); ++y)

@@ -20,6 +20,8 @@ struct OccupancyMap {
 
   /// Grid-frame pose -> the source file's map frame (rotation about the grid origin cell).
   mrpt::math::TPose2D toSourceFrame(const mrpt::math::TPose2D& grid_pose) const;
+  /// The inverse: a pose in the source file's map frame -> grid frame.
+  mrpt::math::TPose2D toGridFrame(const mrpt::math::TPose2D& source_pose) const;
 };
 
 /// Thresholds that classify a cell. MRPT stores occupancy as probability of occupation.

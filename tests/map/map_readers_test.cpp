@@ -142,6 +142,17 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapCase{"no_free_cell", yaml(), kAllOccupied, "no free cell"}),
     [](const auto& param_info) { return param_info.param.name; });
 
+TEST(OccupancyMap, GridAndSourceFramesAreInverse) {
+  OccupancyMap m{std::make_shared<mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom()), 0.7, "test"};
+  const mrpt::math::TPose2D p(3.0, 1.5, -2.9);
+  const auto source = m.toSourceFrame(p);
+  EXPECT_GT(std::hypot(source.x - p.x, source.y - p.y), 0.5);  // the yaw moves it
+  const auto back = m.toGridFrame(source);
+  EXPECT_NEAR(back.x, p.x, 1e-9);
+  EXPECT_NEAR(back.y, p.y, 1e-9);
+  EXPECT_NEAR(back.phi, p.phi, 1e-9);
+}
+
 TEST(MapLoader, RejectsUnknownExtension) {
   EXPECT_THROW(loadOccupancyMap("/tmp/map.jpeg"), InputError);
 }

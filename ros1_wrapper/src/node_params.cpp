@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "node_params.h"
+
+#include <XmlRpcValue.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include "mrpt_krp_plugin/common/input_error.h"
+
+namespace krp::ros1 {
+
+namespace {
+
+using XmlRpc::XmlRpcValue;
+
+/// One parameter: how to read it from its XML-RPC value into NodeParams.
+using Reader = std::function<void(NodeParams&, XmlRpcValue&, const std::string& key)>;
+
+double asNumber(XmlRpcValue& v, const std::string& key) {
+  if (v.getType() == XmlRpcValue::TypeDouble) return static_cast<double>(v);
+  if (v.getType() == XmlRpcValue::TypeInt) return static_cast<int>(v);
+  throw InputError("parameter '" + key + "'", "must be a number");
+}
+
+Reader string(std::string NodeParams::*field) {
+  return [field](NodeParams& p, XmlRpcValue& v, const std::string& key) {
+    if (v.getType() != XmlRpcValue::TypeString) throw InputError("parameter '" + key + "'", "must be a string");
+    p.*field = static_cast<std::string>(v);
+  };
+}
+
+Reader boolean(bool NodeParams::*field) {
+  return [field](NodeParams& p, XmlRpcValue& v, const std::string& key) {
+    if (v.getType() != XmlRpcValue::TypeBoolean) throw InputError("parameter '" + key + "'", "must be true or false");
+    p.*field = static_cast<bool>(v);
+  };
+}
+
+Reader number(double NodeParams::*field, double min, double max) {
+  return [=](NodeParams& p, XmlRpcValue& v, const std::string& key) {
+    const double x = asNumber(v, key);
+    if (!std::isfinite(x) || x < min || x > max)
+      throw InputError("parameter '" + key + "'",
+                       "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " + std::to_string(x));
+    p.*field = x;
+  };
+}
+
+Reader integer(int NodeParams::*field, int min, int max) {
+  return [=](NodeParams& p, XmlRpcValue& v, const std::string& key) {
+    if (v.getType() != XmlRpcValue::TypeInt) throw InputError("parameter '" + key + "'", "must be an integer");
+    const int x = static_cast<int>(v);
+    if (x < min || x > max)
+      throw InputError("parameter '" + key + "'",
+                       "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " + std::to_string(x));
+    p.*field = x;
+  };
+}
+
+const std::map<std::string, Reader>& readers() {
+  static const std::map<std::string, Reader> r = {
+      {"map_file", string(&NodeParams::map_file)},
+      {"global_frame", string(&NodeParams::global_frame)},
+      {"odom_frame", string(&NodeParams::odom_frame)},
+      {"base_frame", string(&NodeParams::base_frame)},
+      {"transform_timeout_s", number(&NodeParams::transform_timeout_s, 0.0, 10.0)},
+      {"min_valid_returns", integer(&NodeParams::min_valid_returns, 1, 100000)},
+      {"backend", string(&NodeParams::backend)},
+      {"models_dir", string(&NodeParams::models_dir)},
+      {"relocalize_on_startup", boolean(&NodeParams::relocalize_on_startup)},
+      {"relocalize_on_kidnap", boolean(&NodeParams::relocalize_on_kidnap)},
+      {"publish_when_not_localized", boolean(&NodeParams::publish_when_not_localized)},
+      {"max_scan_age_s", number(&NodeParams::max_scan_age_s, 0.0, 3600.0)},
+      {"trigger_timeout_s", number(&NodeParams::trigger_timeout_s, 0.1, 600.0)},
+      {"mode", string(&NodeParams::mode)},
+      {"transform_tolerance_s", number(&NodeParams::transform_tolerance_s, 0.0, 10.0)},
+      {"update_min_d", number(&NodeParams::update_min_d, 0.0, 100.0)},
+      {"update_min_a", number(&NodeParams::update_min_a, 0.0, 2 * M_PI)},
+      {"max_particles", integer(&NodeParams::max_particles, 100, 1000000)},
+      {"uniform_fraction", number(&NodeParams::uniform_fraction, 0.0, 0.99)},
+  };
+  return r;
+}
+
+}  // namespace
+
+std::vector<std::string> nodeParamNames() {
+  std::vector<std::string> names;
+  for (const auto& [name, reader] : readers()) names.push_back(name);
+  return names;
+}
+
+NodeParams loadNodeParams(const ros::NodeHandle& private_nh) {
+  NodeParams p;
+  XmlRpcValue all;
+  // No private parameters at all is fine: every key has a default.
+  if (!private_nh.getParam(private_nh.getNamespace(), all)) return p;
+  if (all.getType() != XmlRpcValue::TypeStruct)
+    throw InputError("parameters of " + private_nh.getNamespace(), "expected a dictionary of parameters");
+  for (auto it = all.begin(); it != all.end(); ++it) {
+    const auto reader = readers().find(it->first);
+    if (reader == readers().end()) {
+      std::string known;
+      for (const auto& n : nodeParamNames()) known += (known.empty() ? "" : ", ") + n;
+      throw InputError("parameter '" + it->first + "'", "unknown (known: " + known + ")");
+    }
+    reader->second(p, it->second, it->first);
+  }
+  if (p.mode != "relocalize" && p.mode != "track")
+    throw InputError("parameter 'mode'", "must be 'relocalize' or 'track', got '" + p.mode + "'");
+  bool known_backend = false;
+  for (const auto& b : hypothesisSourceBackends()) known_backend |= b == p.backend;
+  if (!known_backend) throw InputError("parameter 'backend'", "unknown backend '" + p.backend + "'");
+  if (p.backend == "learned" && p.models_dir.empty())
+    throw InputError("parameter 'models_dir'", "backend 'learned' needs the map's models folder");
+  return p;
+}
+
+HypothesisSourceParams NodeParams::hypothesisSource() const {
+  HypothesisSourceParams h;
+  h.backend = backend;
+  h.models_dir = models_dir;
+  return h;
+}
+
+SeededInitParams NodeParams::seeded() const {
+  SeededInitParams s;
+  s.max_particles = static_cast<std::size_t>(max_particles);
+  s.min_particles = std::min(s.min_particles, s.max_particles);
+  s.uniform_fraction = uniform_fraction;
+  return s;
+}
+
+OdometryTrackerParams NodeParams::tracker() const {
+  OdometryTrackerParams t;
+  t.update_min_d_m = update_min_d;
+  t.update_min_a_deg = update_min_a * 180.0 / M_PI;
+  return t;
+}
+
+KidnapDetectorParams NodeParams::kidnap() const {
+  KidnapDetectorParams k;
+  k.enabled = relocalize_on_kidnap;
+  return k;
+}
+
+}  // namespace krp::ros1

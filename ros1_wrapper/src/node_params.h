@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+
+#include <ros/node_handle.h>
+
+#include "mrpt_krp_plugin/filter/kidnap_detector.h"
+#include "mrpt_krp_plugin/filter/odometry_tracker.h"
+#include "mrpt_krp_plugin/filter/seeded_initializer.h"
+#include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
+
+namespace krp::ros1 {
+
+/// Every parameter of krp_relocalizer_node (private namespace), with its default. The
+/// documented list is config/krp_relocalizer.yaml; the two must agree (a test checks it).
+struct NodeParams {
+  // --- inputs
+  std::string map_file;           ///< a map file (.yaml, .gridmap, .bt); empty: subscribe to `map`
+  std::string global_frame = "map";
+  std::string odom_frame = "odom";
+  std::string base_frame = "base_link";
+  double transform_timeout_s = 0.1;  ///< how long a scan waits for its odom -> base transform [s]
+  int min_valid_returns = 10;        ///< a scan with fewer usable returns is rejected
+
+  // --- relocalization
+  std::string backend = "global-matcher";  ///< `learned` (needs models_dir) or `global-matcher`
+  std::string models_dir;                  ///< the models of this map (krp-train-map's output)
+  bool relocalize_on_startup = true;       ///< relocalize from the first scan
+  bool relocalize_on_kidnap = false;       ///< relocalize when the tracked pose stops fitting the scans
+  bool publish_when_not_localized = false;  ///< publish `initialpose` even when the relocalizer is unsure
+  double max_scan_age_s = 1.0;      ///< a scan older than this is not relocalized from [s]
+  double trigger_timeout_s = 10.0;  ///< how long `~relocalize` waits for the answer [s]
+
+  // --- modes
+  std::string mode = "relocalize";  ///< `relocalize` (beside AMCL) or `track` (runs the filter itself)
+  double transform_tolerance_s = 0.1;  ///< `track`: map -> odom is future-dated by this [s]
+  double update_min_d = 0.2;           ///< `track`: filter update after this much motion [m]
+  double update_min_a = 0.5236;        ///< `track`: or this much turn [rad]
+  int max_particles = 5000;            ///< `track`: cap of the seeded particle cloud
+  double uniform_fraction = 0.05;      ///< `track`: share of particles spread uniformly [0..1)
+
+  // Derived library parameters.
+  HypothesisSourceParams hypothesisSource() const;
+  SeededInitParams seeded() const;
+  OdometryTrackerParams tracker() const;
+  KidnapDetectorParams kidnap() const;
+};
+
+/// Reads the private parameters. InputError naming the key for an unknown key (a typo would
+/// otherwise silently keep a default), a value of the wrong type, or a value out of range.
+NodeParams loadNodeParams(const ros::NodeHandle& private_nh);
+
+/// The names of all parameters, for the documentation check.
+std::vector<std::string> nodeParamNames();
+
+}  // namespace krp::ros1

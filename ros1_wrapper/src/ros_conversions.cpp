@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ros_conversions.h"
+
+#include <Eigen/Dense>  // MRPT matrix products need it in the calling file
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2/utils.h>
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "mrpt_krp_plugin/common/input_error.h"
+
+namespace krp::ros1 {
+
+namespace {
+// OccupancyGrid's "unknown" (-1) as p(occupied): neither free nor an obstacle.
+constexpr double kUnknownOccupancy = 0.5;
+// Beam spacing may disagree with (angle_max - angle_min) / increment by float rounding.
+constexpr double kBeamCountTolerance = 0.01;
+// The longest arrow, for a hypothesis of confidence 1 [m].
+constexpr double kMarkerMaxLengthM = 1.0;
+}  // namespace
+
+OccupancyMap occupancyMapFromRos(const nav_msgs::OccupancyGrid& msg) {
+  const std::string what = "map '" + msg.header.frame_id + "'";
+  const auto& info = msg.info;
+  if (info.width == 0 || info.height == 0) throw InputError(what, "the grid is empty (0 cells)");
+  if (!(info.resolution > 0) || !std::isfinite(info.resolution))
+    throw InputError(what, "resolution must be a finite number > 0");
+  if (msg.data.size() != static_cast<size_t>(info.width) * info.height) {
+    std::ostringstream s;
+    s << "data has " << msg.data.size() << " cells, width x height is " << info.width * info.height;
+    throw InputError(what, s.str());
+  }
+  const auto& o = info.origin;
+  if (!std::isfinite(o.position.x) || !std::isfinite(o.position.y))
+    throw InputError(what, "origin must be finite");
+  const double yaw = pose2DFromRos(o).phi;
+  if (!std::isfinite(yaw)) throw InputError(what, "origin orientation must be finite");
+
+  auto grid = std::make_shared<mrpt::maps::COccupancyGridMap2D>();
+  grid->setSize(o.position.x, o.position.x + info.width * info.resolution, o.position.y,
+                o.position.y + info.height * info.resolution, info.resolution, static_cast<float>(kUnknownOccupancy));
+  std::size_t free_cells = 0;
+  for (unsigned y = 0; y < info.height; ++y) {
+    for (unsigned x = 0; x < info.width; ++x) {
+      const int8_t v = msg.data[static_cast<size_t>(y) * info.width + x];
+      const double occ = (v >= 0 && v <= 100) ? v / 100.0 : kUnknownOccupancy;
+      grid->setCell(x, y, static_cast<float>(1.0 - occ));
+      if (occ < CellClassParams{}.max_free_occupancy) ++free_cells;
+    }
+  }
+  if (free_cells == 0) throw InputError(what, "the map has no free cell");
+  return OccupancyMap{grid, yaw, "topic " + what};
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr scanFromRos(const sensor_msgs::LaserScan& msg,
+                                                    const mrpt::poses::CPose3D& laser_in_base,
+                                                    const ScanCheck& check) {
+  const std::string what = "scan from '" + msg.header.frame_id + "'";
+  if (msg.ranges.size() < 2) throw InputError(what, "fewer than 2 beams");
+  if (!std::isfinite(msg.angle_min) || !std::isfinite(msg.angle_max) || !std::isfinite(msg.angle_increment) ||
+      msg.angle_increment == 0.0f)
+    throw InputError(what, "angle_min, angle_max and angle_increment must be finite, the increment non-zero");
+  const double span = static_cast<double>(msg.angle_max) - msg.angle_min;
+  const double expected_beams = span / msg.angle_increment + 1.0;
+  if (!(expected_beams > 1.0) || std::abs(expected_beams - static_cast<double>(msg.ranges.size())) >
+                                     kBeamCountTolerance * msg.ranges.size() + 1.0) {
+    std::ostringstream s;
+    s << msg.ranges.size() << " ranges, but the angles give " << expected_beams << " beams";
+    throw InputError(what, s.str());
+  }
+  if (!(msg.range_max > 0) || !std::isfinite(msg.range_max)) throw InputError(what, "range_max must be finite and > 0");
+
+  // MRPT's scans are centred on the sensor's x axis and spaced aperture/(N-1): an asymmetric
+  // ROS scan becomes a symmetric one on a sensor turned by the centre angle.
+  const size_t n = msg.ranges.size();
+  const double spacing = span / static_cast<double>(n - 1);
+  const double centre = msg.angle_min + 0.5 * span;
+  auto scan = mrpt::obs::CObservation2DRangeScan::Create();
+  scan->sensorLabel = msg.header.frame_id;
+  scan->aperture = static_cast<float>(std::abs(spacing) * (n - 1));
+  scan->rightToLeft = spacing > 0;
+  scan->maxRange = msg.range_max;
+  scan->sensorPose = laser_in_base + mrpt::poses::CPose3D(0, 0, 0, centre, 0, 0);
+  scan->resizeScan(n);
+  int valid = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const float r = msg.ranges[i];
+    const bool ok = std::isfinite(r) && r >= msg.range_min && r < msg.range_max && r > 0.0f;
+    scan->setScanRange(i, ok ? r : msg.range_max);
+    scan->setScanRangeValidity(i, ok);
+    valid += ok ? 1 : 0;
+  }
+  if (valid < check.min_valid_returns) {
+    std::ostringstream s;
+    s << "only " << valid << " of " << n << " readings are usable returns (need " << check.min_valid_returns << ")";
+    throw InputError(what, s.str());
+  }
+  return scan;
+}
+
+mrpt::math::TPose2D pose2DFromRos(const geometry_msgs::Pose& pose) {
+  tf2::Quaternion q(pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w);
+  if (q.length2() == 0.0) q = tf2::Quaternion::getIdentity();
+  return {pose.position.x, pose.position.y, tf2::getYaw(q.normalized())};
+}
+
+mrpt::math::TPose2D pose2DFromRos(const geometry_msgs::Transform& tf) {
+  geometry_msgs::Pose p;
+  p.position.x = tf.translation.x;
+  p.position.y = tf.translation.y;
+  p.orientation = tf.rotation;
+  return pose2DFromRos(p);
+}
+
+geometry_msgs::Pose poseToRos(const mrpt::math::TPose2D& pose) {
+  geometry_msgs::Pose p;
+  p.position.x = pose.x;
+  p.position.y = pose.y;
+  tf2::Quaternion q;
+  q.setRPY(0, 0, pose.phi);
+  p.orientation.x = q.x();
+  p.orientation.y = q.y();
+  p.orientation.z = q.z();
+  p.orientation.w = q.w();
+  return p;
+}
+
+boost::array<double, 36> covarianceToRos(const mrpt::math::CMatrixDouble33& cov) {
+  boost::array<double, 36> out{};
+  const int index[3] = {0, 1, 5};  // x, y, yaw in (x, y, z, roll, pitch, yaw)
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out[index[r] * 6 + index[c]] = cov(r, c);
+  return out;
+}
+
+geometry_msgs::PoseWithCovarianceStamped initialPoseMsg(const PoseHypothesis& best, const OccupancyMap& map,
+                                                        const std_msgs::Header& header) {
+  geometry_msgs::PoseWithCovarianceStamped m;
+  m.header = header;
+  m.pose.pose = poseToRos(map.toSourceFrame(best.pose));
+  // Rotating the frame leaves the yaw variance unchanged; the xy block turns with it.
+  const double c = std::cos(map.yaw_rad), s = std::sin(map.yaw_rad);
+  mrpt::math::CMatrixDouble33 rot;
+  rot.setIdentity();
+  rot(0, 0) = c, rot(0, 1) = -s, rot(1, 0) = s, rot(1, 1) = c;
+  const mrpt::math::CMatrixDouble33 turned(rot.asEigen() * best.cov.asEigen() * rot.asEigen().transpose());
+  m.pose.covariance = covarianceToRos(turned);
+  return m;
+}
+
+geometry_msgs::PoseArray hypothesesPoseArray(const Ranking& ranking, const OccupancyMap& map,
+                                             const std_msgs::Header& header) {
+  geometry_msgs::PoseArray a;
+  a.header = header;
+  for (const auto& h : ranking.hypotheses) a.poses.push_back(poseToRos(map.toSourceFrame(h.pose)));
+  return a;
+}
+
+visualization_msgs::MarkerArray hypothesesMarkers(const Ranking& ranking, const OccupancyMap& map,
+                                                  const std_msgs::Header& header) {
+  visualization_msgs::MarkerArray out;
+  visualization_msgs::Marker clear;
+  clear.header = header;
+  clear.action = visualization_msgs::Marker::DELETEALL;
+  out.markers.push_back(clear);
+  int id = 0;
+  for (const auto& h : ranking.hypotheses) {
+    const double conf = std::clamp(h.confidence, 0.0, 1.0);
+    visualization_msgs::Marker arrow;
+    arrow.header = header;
+    arrow.ns = "hypotheses";
+    arrow.id = id++;
+    arrow.type = visualization_msgs::Marker::ARROW;
+    arrow.action = visualization_msgs::Marker::ADD;
+    arrow.pose = poseToRos(map.toSourceFrame(h.pose));
+    arrow.scale.x = kMarkerMaxLengthM * (0.3 + 0.7 * conf);
+    arrow.scale.y = arrow.scale.z = 0.1;
+    // Green for confident, red for doubtful.
+    arrow.color.r = static_cast<float>(1.0 - conf);
+    arrow.color.g = static_cast<float>(conf);
+    arrow.color.a = 1.0f;
+    out.markers.push_back(arrow);
+    visualization_msgs::Marker text = arrow;
+    text.ns = "confidence";
+    text.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+    text.scale.z = 0.3;
+    text.pose.position.z = 0.5;
+    std::ostringstream s;
+    s.precision(2);
+    s << std::fixed << conf << " (fit " << h.fit_fraction << ")";
+    text.text = s.str();
+    out.markers.push_back(text);
+  }
+  return out;
+}
+
+}  // namespace krp::ros1
