@@ -26,7 +26,7 @@ APT_PACKAGES=(
   libgtest-dev libgmock-dev libyaml-cpp-dev nlohmann-json3-dev zlib1g-dev
   # ROS 1 as packaged by Debian (catkin must be named: see shared/notes/dependencies.md)
   catkin libroscpp-dev libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev
-  libstd-srvs-dev libtf2-ros-dev librosbag-dev ros-core
+  libstd-srvs-dev libtf2-ros-dev librosbag-dev libvisualization-msgs-dev ros-core
   python3-rostopic python3-rosservice python3-std-srvs python3-geometry-msgs
   python3-sensor-msgs python3-nav-msgs
 )

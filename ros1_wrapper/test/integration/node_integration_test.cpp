@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The "robot" side of the node's integration tests: replays a simulated kidnap from a sim world
+// (map, scans, tf) to a running krp_relocalizer_node and checks what it publishes. Run by
+// run_node_test.sh, which starts a roscore on loopback and the node.
+#include <gtest/gtest.h>
+
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/String.h>
+#include <std_srvs/Empty.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <cmath>
+#include <mutex>
+#include <optional>
+
+#include "mrpt_krp_plugin/map/map_loader.h"
+#include "mrpt_krp_plugin/sim/trial.h"
+#include "mrpt_krp_plugin/sim/world.h"
+#include "ros_conversions.h"
+
+namespace krp::ros1 {
+namespace {
+
+constexpr double kMaxErrorM = 0.3;
+constexpr double kMaxErrorDeg = 5.0;
+constexpr double kScanPeriodS = 0.1;
+const char* kWorld = KRP_SOURCE_DIR "/sim_worlds/office_two_zone/office_two_zone.world.yaml";
+
+sensor_msgs::LaserScan toRos(const mrpt::obs::CObservation2DRangeScan& s, const ros::Time& stamp) {
+  sensor_msgs::LaserScan m;
+  m.header.stamp = stamp;
+  m.header.frame_id = "laser";
+  m.angle_min = -0.5f * s.aperture;
+  m.angle_increment = s.aperture / static_cast<float>(s.getScanSize() - 1);
+  m.angle_max = m.angle_min + m.angle_increment * static_cast<float>(s.getScanSize() - 1);
+  m.range_min = 0.05f;
+  m.range_max = s.maxRange;
+  for (size_t i = 0; i < s.getScanSize(); ++i)
+    m.ranges.push_back(s.getScanRangeValidity(i) ? s.getScanRange(i) : std::numeric_limits<float>::infinity());
+  return m;
+}
+
+nav_msgs::OccupancyGrid toRos(const mrpt::maps::COccupancyGridMap2D& g) {
+  nav_msgs::OccupancyGrid m;
+  m.header.frame_id = "map";
+  m.info.width = g.getSizeX();
+  m.info.height = g.getSizeY();
+  m.info.resolution = g.getResolution();
+  m.info.origin.position.x = g.getXMin();
+  m.info.origin.position.y = g.getYMin();
+  m.info.origin.orientation.w = 1.0;
+  for (unsigned y = 0; y < g.getSizeY(); ++y)
+    for (unsigned x = 0; x < g.getSizeX(); ++x)
+      m.data.push_back(static_cast<int8_t>(std::lround(100.0 * (1.0 - g.getCell(x, y)))));
+  return m;
+}
+
+/// The robot: publishes tf (odom -> base_link, base_link -> laser) and scans, and listens to
+/// what the node says.
+class Robot {
+ public:
+  Robot() : listener_(buffer_) {
+    scan_pub_ = nh_.advertise<sensor_msgs::LaserScan>("scan", 5);
+    map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
+    pose_sub_ = nh_.subscribe("initialpose", 5, &Robot::onPose, this);
+    status_sub_ = nh_.subscribe("krp_relocalizer/status", 50, &Robot::onStatus, this);
+    geometry_msgs::TransformStamped laser;
+    laser.header.stamp = ros::Time::now();
+    laser.header.frame_id = "base_link";
+    laser.child_frame_id = "laser";
+    laser.transform.rotation.w = 1.0;
+    static_broadcaster_.sendTransform(laser);
+  }
+
+  /// One scan at `odom`, with its transform, stamped now.
+  void publish(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& odom,
+               const std::string& frame = "laser") {
+    const ros::Time stamp = ros::Time::now();
+    geometry_msgs::TransformStamped t;
+    t.header.stamp = stamp;
+    t.header.frame_id = "odom";
+    t.child_frame_id = "base_link";
+    const auto p = poseToRos(odom);
+    t.transform.translation.x = p.position.x;
+    t.transform.translation.y = p.position.y;
+    t.transform.rotation = p.orientation;
+    broadcaster_.sendTransform(t);
+    auto msg = toRos(scan, stamp);
+    msg.header.frame_id = frame;
+    scan_pub_.publish(msg);
+  }
+
+  /// Publishes the same scan every kScanPeriodS until `done` or the timeout; true if done.
+  bool publishUntil(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& odom, double timeout_s,
+                    const std::function<bool()>& done) {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(timeout_s);
+    while (ros::WallTime::now() < end) {
+      publish(scan, odom);
+      if (done()) return true;
+      ros::WallDuration(kScanPeriodS).sleep();
+    }
+    return done();
+  }
+
+  std::optional<geometry_msgs::PoseWithCovarianceStamped> lastPose() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return pose_;
+  }
+  void clearPose() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pose_.reset();
+  }
+  bool statusContains(const std::string& text) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& s : statuses_)
+      if (s.find(text) != std::string::npos) return true;
+    return false;
+  }
+  std::string statuses() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::string all;
+    for (const auto& s : statuses_) all += s + "\n";
+    return all;
+  }
+
+  ros::NodeHandle nh_;
+  ros::Publisher scan_pub_, map_pub_;
+  tf2_ros::Buffer buffer_;
+
+ private:
+  void onPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pose_ = *m;
+  }
+  void onStatus(const std_msgs::String::ConstPtr& m) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    statuses_.push_back(m->data);
+  }
+
+  ros::Subscriber pose_sub_, status_sub_;
+  tf2_ros::TransformListener listener_;
+  tf2_ros::TransformBroadcaster broadcaster_;
+  tf2_ros::StaticTransformBroadcaster static_broadcaster_;
+  std::mutex mutex_;
+  std::optional<geometry_msgs::PoseWithCovarianceStamped> pose_;
+  std::vector<std::string> statuses_;
+};
+
+void expectNear(const mrpt::math::TPose2D& got, const mrpt::math::TPose2D& truth, const std::string& what) {
+  EXPECT_LT(std::hypot(got.x - truth.x, got.y - truth.y), kMaxErrorM)
+      << what << ": got " << got.asString() << ", truth " << truth.asString();
+  EXPECT_LT(std::abs(mrpt::math::wrapToPi(got.phi - truth.phi)) * 180.0 / M_PI, kMaxErrorDeg)
+      << what << ": got " << got.asString() << ", truth " << truth.asString();
+}
+
+struct Kidnaps {
+  World world = readWorld(kWorld);
+  OccupancyMap map = loadOccupancyMap(world.map_path);
+  Trial first = generateTrial(*map.grid, world.lidar(world.default_lidar_profile), TrialParams{}, 11);
+  Trial second = generateTrial(*map.grid, world.lidar(world.default_lidar_profile), TrialParams{}, 12);
+};
+
+bool waitForService(const std::string& name) { return ros::service::waitForService(name, ros::Duration(30.0)); }
+
+// Mode `relocalize` (beside AMCL): the node is started with ~map_file and the global matcher.
+TEST(RosNodeRelocalize, GlobalLocalizationPublishesTheKidnappedPose) {
+  Kidnaps k;
+  Robot robot;
+  ASSERT_TRUE(waitForService("global_localization"));
+  // The odometry frame is wherever the robot was switched on: not the map's.
+  const mrpt::math::TPose2D odom(3.0, -1.0, 0.4);
+  // Started with relocalize_on_startup: false, so nothing comes until the service is called.
+  robot.publishUntil(*k.first.scans[0], odom, 1.0, [] { return false; });
+  EXPECT_FALSE(robot.lastPose().has_value()) << "published before being asked";
+  std_srvs::Empty empty;
+  ASSERT_TRUE(ros::service::call("global_localization", empty));
+  ASSERT_TRUE(robot.publishUntil(*k.first.scans[0], odom, 60.0, [&] { return robot.lastPose().has_value(); }))
+      << robot.statuses();
+  const auto pose = *robot.lastPose();
+  EXPECT_EQ(pose.header.frame_id, "map");
+  expectNear(pose2DFromRos(pose.pose.pose), k.first.truth[0], "initialpose");
+  EXPECT_GT(pose.pose.covariance[35], 0.0) << "yaw variance at index 35";
+
+  // Carried elsewhere: ~relocalize answers with the new pose.
+  robot.clearPose();
+  robot.publishUntil(*k.second.scans[0], odom, 0.5, [] { return false; });
+  std_srvs::Trigger trigger;
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/relocalize", trigger));
+  EXPECT_TRUE(trigger.response.success) << trigger.response.message;
+  ASSERT_TRUE(robot.publishUntil(*k.second.scans[0], odom, 10.0, [&] { return robot.lastPose().has_value(); }));
+  expectNear(pose2DFromRos(robot.lastPose()->pose.pose), k.second.truth[0], "initialpose after the second kidnap");
+}
+
+TEST(RosNodeRelocalize, BadScansAndMissingTransformsAreReportedAndTheNodeGoesOn) {
+  Kidnaps k;
+  Robot robot;
+  ASSERT_TRUE(waitForService("krp_relocalizer/relocalize"));
+  const mrpt::math::TPose2D odom(0, 0, 0);
+  auto nan_scan = *k.first.scans[0];
+  for (size_t i = 0; i < nan_scan.getScanSize(); ++i) nan_scan.setScanRangeValidity(i, false);
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(10.0);
+  while (ros::WallTime::now() < end && !(robot.statusContains("usable returns") && robot.statusContains("no transform"))) {
+    robot.publish(nan_scan, odom);
+    robot.publish(*k.first.scans[0], odom, "a_frame_nobody_publishes");
+    ros::WallDuration(kScanPeriodS).sleep();
+  }
+  EXPECT_TRUE(robot.statusContains("usable returns")) << robot.statuses();
+  EXPECT_TRUE(robot.statusContains("no transform")) << robot.statuses();
+  // Still alive and answering: with no usable scan it says so instead of guessing.
+  std_srvs::Trigger trigger;
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/relocalize", trigger));
+  EXPECT_FALSE(trigger.response.success);
+  EXPECT_NE(trigger.response.message.find("not localized"), std::string::npos) << trigger.response.message;
+  // And a good scan afterwards still works.
+  robot.publishUntil(*k.first.scans[0], odom, 0.5, [] { return false; });
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/relocalize", trigger));
+  EXPECT_TRUE(trigger.response.success) << trigger.response.message;
+}
+
+// Mode `track`: the node gets the map on `map`, seeds its own filter from the first scan and
+// publishes map -> odom.
+TEST(RosNodeTrack, MapToOdomConverges) {
+  Kidnaps k;
+  Robot robot;
+  robot.map_pub_.publish(toRos(*k.map.grid));
+  ASSERT_TRUE(waitForService("global_localization"));
+  mrpt::poses::CPose2D odom(-4.0, 2.0, -1.0);
+  const Trial& t = k.first;
+  for (size_t i = 0; i < t.scans.size(); ++i) {
+    odom = odom + t.odometry[i];
+    // The first scan waits for the node to seed (the map arrives on a topic first).
+    if (i == 0) robot.publishUntil(*t.scans[0], odom.asTPose(), 30.0, [&] {
+      return robot.statusContains("filter seeded");
+    });
+    else robot.publish(*t.scans[i], odom.asTPose());
+    ros::WallDuration(kScanPeriodS).sleep();
+  }
+  ASSERT_TRUE(robot.statusContains("filter seeded")) << robot.statuses();
+  geometry_msgs::TransformStamped map_to_base;
+  try {
+    map_to_base = robot.buffer_.lookupTransform("map", "base_link", ros::Time(0), ros::Duration(5.0));
+  } catch (const tf2::TransformException& e) {
+    FAIL() << "no map -> base_link: " << e.what() << "\n" << robot.statuses();
+  }
+  expectNear(pose2DFromRos(map_to_base.transform), t.truth.back(), "map -> base_link at the end of the trial");
+}
+
+}  // namespace
+}  // namespace krp::ros1
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "krp_node_integration_test", ros::init_options::AnonymousName);
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  const int rc = RUN_ALL_TESTS();
+  ros::shutdown();
+  return rc;
+}
