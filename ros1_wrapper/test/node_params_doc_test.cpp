@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The documented parameter file and the node must list the same keys, with the same defaults.
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <set>
+
+#include "node_params.h"
+
+namespace krp::ros1 {
+namespace {
+
+TEST(RosNodeParams, TheYamlDocumentsExactlyTheNodesKeys) {
+  const YAML::Node doc = YAML::LoadFile(KRP_ROS1_DIR "/config/krp_relocalizer.yaml");
+  std::set<std::string> documented;
+  for (const auto& kv : doc) documented.insert(kv.first.as<std::string>());
+  const auto names = nodeParamNames();
+  EXPECT_EQ(documented, std::set<std::string>(names.begin(), names.end()));
+}
+
+TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
+  const YAML::Node doc = YAML::LoadFile(KRP_ROS1_DIR "/config/krp_relocalizer.yaml");
+  const NodeParams d;
+  EXPECT_EQ(doc["backend"].as<std::string>(), d.backend);
+  EXPECT_EQ(doc["mode"].as<std::string>(), d.mode);
+  EXPECT_EQ(doc["map_file"].as<std::string>(), d.map_file);
+  EXPECT_EQ(doc["relocalize_on_startup"].as<bool>(), d.relocalize_on_startup);
+  EXPECT_EQ(doc["relocalize_on_kidnap"].as<bool>(), d.relocalize_on_kidnap);
+  EXPECT_EQ(doc["publish_when_not_localized"].as<bool>(), d.publish_when_not_localized);
+  EXPECT_EQ(doc["min_valid_returns"].as<int>(), d.min_valid_returns);
+  EXPECT_EQ(doc["max_particles"].as<int>(), d.max_particles);
+  EXPECT_DOUBLE_EQ(doc["max_scan_age_s"].as<double>(), d.max_scan_age_s);
+  EXPECT_DOUBLE_EQ(doc["trigger_timeout_s"].as<double>(), d.trigger_timeout_s);
+  EXPECT_DOUBLE_EQ(doc["update_min_d"].as<double>(), d.update_min_d);
+  EXPECT_DOUBLE_EQ(doc["update_min_a"].as<double>(), d.update_min_a);
+  EXPECT_DOUBLE_EQ(doc["uniform_fraction"].as<double>(), d.uniform_fraction);
+  EXPECT_DOUBLE_EQ(doc["transform_tolerance_s"].as<double>(), d.transform_tolerance_s);
+  EXPECT_DOUBLE_EQ(doc["transform_timeout_s"].as<double>(), d.transform_timeout_s);
+  EXPECT_EQ(doc["global_frame"].as<std::string>(), d.global_frame);
+  EXPECT_EQ(doc["odom_frame"].as<std::string>(), d.odom_frame);
+  EXPECT_EQ(doc["base_frame"].as<std::string>(), d.base_frame);
+}
+
+}  // namespace
+}  // namespace krp::ros1
