@@ -15,6 +15,9 @@
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/relocalize/relocalization_output.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
+#ifdef KRP_WITH_ROS1
+#include "bag_reader.h"
+#endif
 
 namespace fs = std::filesystem;
 using krp::apps::CliArgs;
@@ -23,7 +26,7 @@ namespace {
 constexpr char kSection[] = "localize";
 
 // The INI's [localize] keys; each may also be given as a flag of the same name with '-'.
-const std::set<std::string> kIniKeys = {"map", "rawlog", "method", "ground_truth", "out_dir", "seed",
+const std::set<std::string> kIniKeys = {"map", "rawlog", "bag", "scan_topic", "odom_frame", "base_frame", "method", "ground_truth", "out_dir", "seed",
                                         "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min",
                                         "models", "single_scan", "top_zones", "seeded_uniform_fraction"};
 
@@ -51,7 +54,7 @@ std::map<std::string, std::string> mergeSettings(const CliArgs& args) {
     if (!args.has(flagName(k))) s[k] = cfg.read_string(kSection, k, "");
   }
   // Relative paths in the INI are relative to the INI's folder.
-  for (const char* k : {"map", "rawlog", "ground_truth", "out_dir", "models"})
+  for (const char* k : {"map", "rawlog", "bag", "ground_truth", "out_dir", "models"})
     if (!args.has(flagName(k)) && !s[k].empty() && fs::path(s[k]).is_relative() && keys.end() != std::find(keys.begin(), keys.end(), k))
       s[k] = (fs::path(ini).parent_path() / s[k]).string();
   return s;
@@ -93,6 +96,26 @@ int relocalizeOneScan(const krp::Relocalizer& relocalizer, const mrpt::maps::COc
 }
 }  // namespace
 
+// The steps from --rawlog, or from --bag through the ROS 1 wrapper when it is part of the build.
+static std::vector<krp::RawlogStep> readSteps(std::map<std::string, std::string>& s) {
+  if (s["bag"].empty()) return krp::readRawlog(s["rawlog"]);
+#ifdef KRP_WITH_ROS1
+  krp::ros1::BagReadParams p;
+  p.scan_topic = s["scan_topic"];
+  p.odom_frame = s["odom_frame"];
+  p.base_frame = s["base_frame"];
+  auto bag = krp::ros1::readBag(s["bag"], p);
+  std::cout << "bag: " << bag.steps.size() << " of " << bag.scans_seen << " scans used";
+  if (bag.steps.size() < static_cast<size_t>(bag.scans_seen))
+    std::cout << " (" << bag.skipped_no_transform << " without a transform, " << bag.skipped_bad_scan
+              << " unusable; first: " << bag.first_problem << ")";
+  std::cout << "\n";
+  return std::move(bag.steps);
+#else
+  throw krp::InputError("--bag", "this build has no ROS 1 support (install ROS 1 with scripts/install_deps.sh and rebuild)");
+#endif
+}
+
 static int run(int argc, char** argv) {
   CliArgs args("krp-localize",
                "Runs MRPT's particle filter over a rawlog from a global (unknown) start and writes the poses as CSV "
@@ -101,6 +124,10 @@ static int run(int argc, char** argv) {
                {{"ini", "FILE", "INI file with a [localize] section", ""},
                 {"map", "FILE", "map (.yaml, .gridmap[.gz], .bt/.ot)", ""},
                 {"rawlog", "FILE", "MRPT rawlog with odometry + 2D scans", ""},
+                {"bag", "FILE", "ROS 1 bag with LaserScan + tf instead of --rawlog (builds with ROS 1)", ""},
+                {"scan-topic", "TOPIC", "--bag: the LaserScan topic", "/scan"},
+                {"odom-frame", "FRAME", "--bag: odometry frame", "odom"},
+                {"base-frame", "FRAME", "--bag: robot frame", "base_link"},
                 {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform or global-matcher", "amcl-kld"},
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
                 {"single-scan", "STEP", "relocalize from this rawlog step's scan only: print the hypotheses, write "
@@ -116,8 +143,8 @@ static int run(int argc, char** argv) {
                 {"kld-min", "N", "amcl-kld: min particles", "100"}});
   if (!args.parse(argc, argv)) return 0;
   auto s = mergeSettings(args);
-  if (s["map"].empty() || s["rawlog"].empty())
-    throw krp::InputError("arguments", "--map and --rawlog are required (flags or INI)\n" + args.usage());
+  if (s["map"].empty() || s["rawlog"].empty() == s["bag"].empty())
+    throw krp::InputError("arguments", "--map and one of --rawlog or --bag are required (flags or INI)\n" + args.usage());
 
   krp::MethodSettings ms;
   ms.uniform.particles = static_cast<size_t>(toNumber(s, "uniform_particles"));
@@ -133,7 +160,7 @@ static int run(int argc, char** argv) {
     if (s["models"].empty()) throw krp::InputError("--models", "required by method '" + s["method"] + "' and --single-scan");
     relocalizer = std::make_shared<krp::Relocalizer>(s["models"], *map.grid, ms.relocalizer);
   }
-  const auto steps = krp::readRawlog(s["rawlog"]);
+  const auto steps = readSteps(s);
   std::vector<mrpt::math::TPose2D> truth;
   if (!s["ground_truth"].empty()) {
     truth = krp::readGroundTruth(s["ground_truth"]);
@@ -166,7 +193,7 @@ static int run(int argc, char** argv) {
   krp::writeFileAtomically((out / "poses.csv").string(), csv.str());
   std::ostringstream sum;
   const auto& last = records.back();
-  sum << "krp-localize summary\ncommand: " << args.commandLine() << "\nmap: " << s["map"] << "\nrawlog: " << s["rawlog"]
+  sum << "krp-localize summary\ncommand: " << args.commandLine() << "\nmap: " << s["map"] << "\ninput: " << (s["bag"].empty() ? s["rawlog"] : s["bag"])
       << "\nmethod: " << init->name() << "\nsteps: " << steps.size() << "\ninitial particles: " << records.front().particles
       << "\nfinal particles: " << last.particles << "\nfinal pose (grid frame): " << loc.particles().getMeanVal().asString()
       << "\nfinal std: " << last.std_xy_m << " m, " << last.std_phi_deg << " deg\n";

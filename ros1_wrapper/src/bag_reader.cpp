@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "bag_reader.h"
+
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <tf2/buffer_core.h>
+#include <tf2/exceptions.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <filesystem>
+
+#include "mrpt_krp_plugin/common/input_error.h"
+
+namespace krp::ros1 {
+
+namespace {
+// tf2's cache must hold the whole bag: transforms are looked up after all are loaded.
+constexpr double kCacheMarginS = 10.0;
+
+void loadTransforms(const rosbag::Bag& bag, tf2::BufferCore& buffer) {
+  rosbag::View view(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
+  for (const auto& m : view) {
+    const auto tf = m.instantiate<tf2_msgs::TFMessage>();
+    if (!tf) continue;
+    const bool is_static = m.getTopic() == "/tf_static";
+    for (const auto& t : tf->transforms) buffer.setTransform(t, "bag", is_static);
+  }
+}
+}  // namespace
+
+BagSteps readBag(const std::string& path, const BagReadParams& params) {
+  if (!std::filesystem::exists(path)) throw InputError(path, "bag file does not exist");
+  rosbag::Bag bag;
+  try {
+    bag.open(path, rosbag::bagmode::Read);
+  } catch (const rosbag::BagException& e) {
+    throw InputError(path, std::string("not a readable ROS 1 bag: ") + e.what());
+  }
+  BagSteps out;
+  try {
+    rosbag::View all(bag);
+    if (all.size() == 0) throw InputError(path, "the bag holds no messages");
+    const double length_s = (all.getEndTime() - all.getBeginTime()).toSec();
+    tf2::BufferCore buffer(ros::Duration(length_s + kCacheMarginS));
+    loadTransforms(bag, buffer);
+
+    rosbag::View scans(bag, rosbag::TopicQuery(params.scan_topic));
+    if (scans.size() == 0) throw InputError(path, "no messages on the scan topic '" + params.scan_topic + "'");
+    std::optional<mrpt::poses::CPose2D> previous_odom;
+    const auto motion_model = params.odometry.toMrpt();
+    for (const auto& m : scans) {
+      const auto msg = m.instantiate<sensor_msgs::LaserScan>();
+      if (!msg) throw InputError(path, "topic '" + params.scan_topic + "' does not hold sensor_msgs/LaserScan");
+      ++out.scans_seen;
+      mrpt::poses::CPose3D laser_in_base;
+      mrpt::poses::CPose2D odom;
+      try {
+        const auto laser = buffer.lookupTransform(params.base_frame, msg->header.frame_id, msg->header.stamp);
+        const auto l = pose2DFromRos(laser.transform);
+        laser_in_base = mrpt::poses::CPose3D(l.x, l.y, laser.transform.translation.z, l.phi, 0, 0);
+        odom = mrpt::poses::CPose2D(
+            pose2DFromRos(buffer.lookupTransform(params.odom_frame, params.base_frame, msg->header.stamp).transform));
+      } catch (const tf2::TransformException& e) {
+        ++out.skipped_no_transform;
+        if (out.first_problem.empty()) out.first_problem = std::string("no transform: ") + e.what();
+        continue;
+      }
+      mrpt::obs::CObservation2DRangeScan::Ptr scan;
+      try {
+        scan = scanFromRos(*msg, laser_in_base, params.scan_check);
+      } catch (const InputError& e) {
+        ++out.skipped_bad_scan;
+        if (out.first_problem.empty()) out.first_problem = e.what();
+        continue;
+      }
+      scan->timestamp = mrpt::Clock::fromDouble(msg->header.stamp.toSec());
+      RawlogStep step;
+      step.action = mrpt::obs::CActionCollection::Create();
+      mrpt::obs::CActionRobotMovement2D move;
+      move.computeFromOdometry(previous_odom ? odom - *previous_odom : mrpt::poses::CPose2D(), motion_model);
+      step.action->insert(move);
+      step.observations = mrpt::obs::CSensoryFrame::Create();
+      step.observations->insert(scan);
+      out.steps.push_back(std::move(step));
+      previous_odom = odom;
+    }
+  } catch (const rosbag::BagException& e) {
+    throw InputError(path, std::string("bag is truncated or corrupt: ") + e.what());
+  }
+  if (out.steps.empty())
+    throw InputError(path, "none of the " + std::to_string(out.scans_seen) + " scans could be used: " + out.first_problem);
+  return out;
+}
+
+}  // namespace krp::ros1

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <gtest/gtest.h>
+
+#include <mrpt/obs/CActionRobotMovement2D.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "bag_reader.h"
+#include "mrpt_krp_plugin/common/input_error.h"
+#include "support/test_maps.h"
+#include "support/trial_bag.h"
+
+namespace krp::ros1 {
+namespace {
+
+Trial smallTrial() {
+  TrialParams tp;
+  tp.steps = 6;
+  return generateTrial(krp::test::asymmetricRoom(), lidarProfileByName("omni_12m"), tp, 4);
+}
+
+TEST(RosBagReader, GivesTheTrialsScansAndOdometryBack) {
+  const Trial t = smallTrial();
+  const std::string path = krp::test::tempDir("bag_reader") + "/trial.bag";
+  test::writeTrialBag(t, path);
+  const auto bag = readBag(path);
+  ASSERT_EQ(bag.steps.size(), t.scans.size());
+  EXPECT_EQ(bag.scans_seen, static_cast<int>(t.scans.size()));
+  for (size_t i = 1; i < bag.steps.size(); ++i) {
+    const auto move = bag.steps[i].action->getBestMovementEstimation();
+    ASSERT_TRUE(move);
+    const auto got = move->poseChange->getMeanVal();
+    EXPECT_NEAR(got.x(), t.odometry[i].x(), 1e-6) << i;
+    EXPECT_NEAR(got.y(), t.odometry[i].y(), 1e-6) << i;
+    EXPECT_NEAR(got.phi(), t.odometry[i].phi(), 1e-6) << i;
+  }
+  const auto scan = bag.steps[2].observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+  ASSERT_TRUE(scan);
+  EXPECT_EQ(scan->getScanSize(), t.scans[2]->getScanSize());
+}
+
+TEST(RosBagReader, BadBagsAreInputErrors) {
+  const Trial t = smallTrial();
+  const std::string dir = krp::test::tempDir("bag_reader_bad");
+  test::writeTrialBag(t, dir + "/good.bag");
+  // Truncated: the first half of a good bag.
+  const auto size = std::filesystem::file_size(dir + "/good.bag");
+  std::filesystem::copy_file(dir + "/good.bag", dir + "/truncated.bag");
+  std::filesystem::resize_file(dir + "/truncated.bag", size / 2);
+  krp::test::writeText(dir + "/text.bag", "this is not a bag\n");
+  const std::pair<std::string, std::string> cases[] = {
+      {dir + "/missing.bag", "does not exist"}, {dir + "/text.bag", "not a readable"}, {dir + "/truncated.bag", ""}};
+  for (const auto& [path, expected] : cases) {
+    try {
+      readBag(path);
+      ADD_FAILURE() << path << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  BagReadParams wrong_topic;
+  wrong_topic.scan_topic = "/laser";
+  EXPECT_THROW(readBag(dir + "/good.bag", wrong_topic), InputError);
+  BagReadParams wrong_frame;
+  wrong_frame.base_frame = "base_footprint";
+  try {
+    readBag(dir + "/good.bag", wrong_frame);
+    ADD_FAILURE() << "no scan has a transform to base_footprint";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no transform"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace krp::ros1

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "support/trial_bag.h"
+
+#include <rosbag/bag.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <limits>
+
+#include "ros_conversions.h"
+
+namespace krp::ros1::test {
+
+namespace {
+geometry_msgs::TransformStamped transform(const std::string& parent, const std::string& child,
+                                          const mrpt::math::TPose2D& p, const ros::Time& stamp) {
+  geometry_msgs::TransformStamped t;
+  t.header.stamp = stamp;
+  t.header.frame_id = parent;
+  t.child_frame_id = child;
+  const auto pose = poseToRos(p);
+  t.transform.translation.x = pose.position.x;
+  t.transform.translation.y = pose.position.y;
+  t.transform.rotation = pose.orientation;
+  return t;
+}
+}  // namespace
+
+void writeTrialBag(const Trial& trial, const std::string& path, const mrpt::math::TPose2D& odom_origin) {
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  const ros::Time start(100.0);
+  tf2_msgs::TFMessage statics;
+  const auto& mount = trial.scans.front()->sensorPose;
+  statics.transforms.push_back(
+      transform("base_link", "laser", mrpt::math::TPose2D(mount.x(), mount.y(), mount.yaw()), start));
+  bag.write("/tf_static", start, statics);
+  mrpt::poses::CPose2D odom(odom_origin);
+  for (size_t i = 0; i < trial.scans.size(); ++i) {
+    const ros::Time stamp = start + ros::Duration(0.1 * static_cast<double>(i));
+    odom = odom + trial.odometry[i];
+    tf2_msgs::TFMessage tf;
+    tf.transforms.push_back(transform("odom", "base_link", odom.asTPose(), stamp));
+    bag.write("/tf", stamp, tf);
+    const auto& s = *trial.scans[i];
+    sensor_msgs::LaserScan m;
+    m.header.stamp = stamp;
+    m.header.frame_id = "laser";
+    m.angle_min = -0.5f * s.aperture;
+    m.angle_increment = s.aperture / static_cast<float>(s.getScanSize() - 1);
+    m.angle_max = m.angle_min + m.angle_increment * static_cast<float>(s.getScanSize() - 1);
+    m.range_min = 0.05f;
+    m.range_max = s.maxRange;
+    for (size_t b = 0; b < s.getScanSize(); ++b)
+      m.ranges.push_back(s.getScanRangeValidity(b) ? s.getScanRange(b) : std::numeric_limits<float>::infinity());
+    bag.write("/scan", stamp, m);
+  }
+  bag.close();
+}
+
+}  // namespace krp::ros1::test
