@@ -60,6 +60,7 @@ RelocalizerNode::RelocalizerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   scan_sub_ = nh_.subscribe("scan", kScanQueue, &RelocalizerNode::onScan, this);
   if (params_.mode == "relocalize" && params_.relocalize_on_kidnap)
     amcl_pose_sub_ = nh_.subscribe("amcl_pose", 1, &RelocalizerNode::onAmclPose, this);
+  if (params_.mode == "track") initialpose_sub_ = nh_.subscribe("initialpose", 1, &RelocalizerNode::onInitialPose, this);
   global_localization_srv_ =
       nh_.advertiseService("global_localization", &RelocalizerNode::onGlobalLocalization, this);
   relocalize_srv_ = pnh_.advertiseService("relocalize", &RelocalizerNode::onRelocalize, this);
@@ -72,6 +73,7 @@ RelocalizerNode::~RelocalizerNode() {
   scan_sub_.shutdown();
   map_sub_.shutdown();
   amcl_pose_sub_.shutdown();
+  initialpose_sub_.shutdown();
   global_localization_srv_.shutdown();
   relocalize_srv_.shutdown();
   // The workers call back into this object: stop them before anything else goes.
@@ -100,7 +102,24 @@ void RelocalizerNode::useMap(OccupancyMap map) {
       serialized, [this, map_ptr](const RelocalizationReply& reply) { onReply(reply, map_ptr); });
   if (params_.mode == "relocalize" && params_.relocalize_on_kidnap) state->fit = std::make_unique<ScanFitScorer>(*grid);
   if (params_.mode == "track") {
-    state->seeding = std::make_shared<SeededInitializer>(serialized, params_.seeded());
+    state->user_pose = std::make_shared<std::optional<Ranking>>();
+    state->user_pose_mutex = std::make_shared<std::mutex>();
+    // A pose given by a user seeds the filter once, instead of the relocalizer.
+    const auto user_pose = state->user_pose;
+    const auto user_pose_mutex = state->user_pose_mutex;
+    const HypothesisSource seeding_source = [serialized, user_pose, user_pose_mutex](
+                                                const mrpt::obs::CObservation2DRangeScan& scan) {
+      {
+        std::lock_guard<std::mutex> lock(*user_pose_mutex);
+        if (*user_pose) {
+          Ranking given = **user_pose;
+          user_pose->reset();
+          return given;
+        }
+      }
+      return serialized(scan);
+    };
+    state->seeding = std::make_shared<SeededInitializer>(seeding_source, params_.seeded());
     MclParams mcl;
     mcl.kidnap = params_.kidnap();
     state->tracker = std::make_shared<OdometryTracker>(grid, state->seeding, mcl, params_.tracker());
@@ -184,6 +203,35 @@ void RelocalizerNode::onAmclPose(const geometry_msgs::PoseWithCovarianceStamped:
   amcl_pose_stamp_ = msg->header.stamp;
 }
 
+void RelocalizerNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
+  std::shared_ptr<MapState> state;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    state = map_state_;
+  }
+  if (!state) {
+    report("initialpose ignored: no map yet", true);
+    return;
+  }
+  if (!msg->header.frame_id.empty() && msg->header.frame_id != params_.global_frame) {
+    report("initialpose ignored: frame '" + msg->header.frame_id + "' is not '" + params_.global_frame + "'", true);
+    return;
+  }
+  PoseHypothesis h;
+  h.pose = state->map->toGridFrame(pose2DFromRos(msg->pose.pose));
+  h.cov = covarianceFromRos(msg->pose.covariance, state->map->yaw_rad);
+  h.confidence = 1.0;
+  Ranking given;
+  given.hypotheses = {h};
+  given.localized = true;
+  {
+    std::lock_guard<std::mutex> lock(*state->user_pose_mutex);
+    *state->user_pose = given;
+  }
+  reinitialize_tracker_ = true;
+  report("initialpose received: the filter re-seeds around it at the next scan", false);
+}
+
 void RelocalizerNode::checkKidnap(const mrpt::obs::CObservation2DRangeScan& scan, const ros::Time& stamp) {
   std::shared_ptr<MapState> state;
   std::optional<mrpt::math::TPose2D> pose;
@@ -244,7 +292,14 @@ void RelocalizerNode::onReply(const RelocalizationReply& reply, const std::share
   std::ostringstream s;
   s.precision(0);
   s << std::fixed;
-  if (reply.ranking.localized || (params_.publish_when_not_localized && !reply.ranking.hypotheses.empty())) {
+  if (params_.mode == "track") {
+    // The node's own filter is the consumer: `~relocalize` re-seeds it instead.
+    s << (reply.ranking.localized ? "localized: " + describe(reply.ranking.hypotheses.front(), *map)
+                                  : "not localized: " + reply.ranking.reason)
+      << " (" << reply.latency_ms << " ms)";
+    report(s.str(), !reply.ranking.localized);
+  } else if (reply.ranking.localized ||
+             (params_.publish_when_not_localized && !reply.ranking.hypotheses.empty())) {
     std_msgs::Header header;
     header.stamp = stamp;
     header.frame_id = params_.global_frame;

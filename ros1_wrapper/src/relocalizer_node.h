@@ -31,7 +31,8 @@ namespace krp::ros1 {
 ///
 /// Topics in: `map` (unless ~map_file), `scan`, tf, `amcl_pose` (relocalize mode, for kidnap
 /// detection). Out: `initialpose`, `~hypotheses`, `~hypothesis_markers`, `~status`; in track
-/// mode also `amcl_pose`, `particlecloud` and the map -> odom transform.
+/// mode also `amcl_pose`, `particlecloud` and the map -> odom transform, and it takes a pose
+/// given on `initialpose` (RViz's "2D Pose Estimate") as AMCL does.
 /// Services: `global_localization` (std_srvs/Empty, AMCL's name and type), `~relocalize`
 /// (std_srvs/Trigger: answers with the pose and confidence, or why not localized).
 class RelocalizerNode {
@@ -48,6 +49,9 @@ class RelocalizerNode {
     std::unique_ptr<ScanFitScorer> fit;  ///< relocalize mode: kidnap detection at AMCL's pose
     std::shared_ptr<SeededInitializer> seeding;  ///< track mode
     std::shared_ptr<OdometryTracker> tracker;    ///< track mode: used by the track worker only
+    /// Track mode: a pose a user gave on `initialpose`; the next seeding uses it instead of the relocalizer.
+    std::shared_ptr<std::optional<Ranking>> user_pose;
+    std::shared_ptr<std::mutex> user_pose_mutex;
   };
   struct TrackJob {
     mrpt::obs::CObservation2DRangeScan::Ptr scan;
@@ -60,6 +64,7 @@ class RelocalizerNode {
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg);
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg);
   void onAmclPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg);
+  void onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg);
   bool onGlobalLocalization(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   bool onRelocalize(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res);
 
@@ -79,7 +84,7 @@ class RelocalizerNode {
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher initialpose_pub_, hypotheses_pub_, markers_pub_, status_pub_, amcl_pose_pub_, cloud_pub_;
-  ros::Subscriber map_sub_, scan_sub_, amcl_pose_sub_;
+  ros::Subscriber map_sub_, scan_sub_, amcl_pose_sub_, initialpose_sub_;
   ros::ServiceServer global_localization_srv_, relocalize_srv_;
 
   std::mutex mutex_;  ///< guards everything below

@@ -21,6 +21,9 @@ constexpr double kUnknownOccupancy = 0.5;
 constexpr double kBeamCountTolerance = 0.01;
 // The longest arrow, for a hypothesis of confidence 1 [m].
 constexpr double kMarkerMaxLengthM = 1.0;
+// AMCL's initial_cov_xx / initial_cov_aa defaults, for a pose given without a usable covariance.
+constexpr double kDefaultStdXyM = 0.5;
+constexpr double kDefaultStdYawRad = M_PI / 12;
 }  // namespace
 
 OccupancyMap occupancyMapFromRos(const nav_msgs::OccupancyGrid& msg) {
@@ -135,6 +138,28 @@ boost::array<double, 36> covarianceToRos(const mrpt::math::CMatrixDouble33& cov)
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) out[index[r] * 6 + index[c]] = cov(r, c);
   return out;
+}
+
+mrpt::math::CMatrixDouble33 covarianceFromRos(const boost::array<double, 36>& cov, double grid_yaw_rad) {
+  const int index[3] = {0, 1, 5};
+  mrpt::math::CMatrixDouble33 m;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) m(r, c) = cov[index[r] * 6 + index[c]];
+  const double defaults[3] = {kDefaultStdXyM * kDefaultStdXyM, kDefaultStdXyM * kDefaultStdXyM,
+                              kDefaultStdYawRad * kDefaultStdYawRad};
+  for (int i = 0; i < 3; ++i) {
+    bool finite = true;
+    for (int c = 0; c < 3; ++c) finite = finite && std::isfinite(m(i, c));
+    if (!finite || !(m(i, i) > 0)) {
+      for (int c = 0; c < 3; ++c) m(i, c) = m(c, i) = 0.0;
+      m(i, i) = defaults[i];
+    }
+  }
+  const double c = std::cos(-grid_yaw_rad), s = std::sin(-grid_yaw_rad);
+  mrpt::math::CMatrixDouble33 rot;
+  rot.setIdentity();
+  rot(0, 0) = c, rot(0, 1) = -s, rot(1, 0) = s, rot(1, 1) = c;
+  return mrpt::math::CMatrixDouble33(rot.asEigen() * m.asEigen() * rot.asEigen().transpose());
 }
 
 geometry_msgs::PoseWithCovarianceStamped initialPoseMsg(const PoseHypothesis& best, const OccupancyMap& map,

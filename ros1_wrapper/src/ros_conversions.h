@@ -47,6 +47,10 @@ geometry_msgs::Pose poseToRos(const mrpt::math::TPose2D& pose);
 /// layout: yaw variance at index 35, as AMCL reads it.
 boost::array<double, 36> covarianceToRos(const mrpt::math::CMatrixDouble33& cov);
 
+/// The inverse of covarianceToRos, turned from the map frame into a grid frame yawed by
+/// `grid_yaw_rad`. Non-finite or negative variances are replaced by AMCL's initial defaults.
+mrpt::math::CMatrixDouble33 covarianceFromRos(const boost::array<double, 36>& cov, double grid_yaw_rad);
+
 /// The ranking's best hypothesis as an `initialpose` message in the map frame.
 geometry_msgs::PoseWithCovarianceStamped initialPoseMsg(const PoseHypothesis& best, const OccupancyMap& map,
                                                         const std_msgs::Header& header);

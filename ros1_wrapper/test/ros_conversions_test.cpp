@@ -168,6 +168,26 @@ TEST(RosConversions, YawedMapPosesComeOutInTheMapFrame) {
   EXPECT_NEAR(m.pose.covariance[35], 0.003, 1e-12);  // yaw variance where AMCL reads it
 }
 
+TEST(RosConversions, CovarianceRoundTripsAndBadOnesGetDefaults) {
+  mrpt::math::CMatrixDouble33 c;
+  c.setZero();
+  c(0, 0) = 0.04, c(1, 1) = 0.09, c(2, 2) = 0.01, c(0, 1) = c(1, 0) = 0.01;
+  const auto back = covarianceFromRos(covarianceToRos(c), 0.0);
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(back(r, k), c(r, k), 1e-12);
+  boost::array<double, 36> zero{};
+  const auto d = covarianceFromRos(zero, 0.0);
+  EXPECT_NEAR(d(0, 0), 0.25, 1e-12);  // AMCL's initial_cov_xx
+  EXPECT_NEAR(d(2, 2), std::pow(M_PI / 12, 2), 1e-12);
+  boost::array<double, 36> nan{};
+  nan[0] = std::numeric_limits<double>::quiet_NaN();
+  nan[7] = 0.09;
+  nan[35] = 0.01;
+  const auto n = covarianceFromRos(nan, 0.0);
+  EXPECT_NEAR(n(0, 0), 0.25, 1e-12);
+  EXPECT_NEAR(n(1, 1), 0.09, 1e-12);
+}
+
 TEST(RosConversions, HypothesesForRviz) {
   const auto map = occupancyMapFromRos(gridMsg(50, 50));
   Ranking r;

@@ -227,6 +227,39 @@ TEST(RosNodeRelocalize, BadScansAndMissingTransformsAreReportedAndTheNodeGoesOn)
   EXPECT_TRUE(trigger.response.success) << trigger.response.message;
 }
 
+// Beside AMCL with relocalize_on_kidnap: AMCL (played by the test) keeps reporting the old pose
+// while the robot has been carried off; the scans stop fitting there and the node relocalizes.
+TEST(RosNodeRelocalize, KidnapBesideAmclIsDetectedAndRelocalized) {
+  Kidnaps k;
+  Robot robot;
+  ros::Publisher amcl = robot.nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("amcl_pose", 5);
+  ASSERT_TRUE(waitForService("global_localization"));
+  const mrpt::math::TPose2D odom(0, 0, 0);
+  geometry_msgs::PoseWithCovarianceStamped amcl_pose;
+  amcl_pose.header.frame_id = "map";
+  amcl_pose.pose.pose = poseToRos(k.first.truth[0]);
+  auto publishBoth = [&](const mrpt::obs::CObservation2DRangeScan& scan) {
+    amcl_pose.header.stamp = ros::Time::now();
+    amcl.publish(amcl_pose);
+    robot.publish(scan, odom);
+  };
+  // Tracking well: the scans fit at AMCL's pose, nothing is published.
+  for (int i = 0; i < 15; ++i) {
+    publishBoth(*k.first.scans[0]);
+    ros::WallDuration(kScanPeriodS).sleep();
+  }
+  EXPECT_FALSE(robot.lastPose().has_value()) << robot.statuses();
+  // Carried off: AMCL still believes the old pose.
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(30.0);
+  while (ros::WallTime::now() < end && !robot.lastPose()) {
+    publishBoth(*k.second.scans[0]);
+    ros::WallDuration(kScanPeriodS).sleep();
+  }
+  ASSERT_TRUE(robot.lastPose().has_value()) << robot.statuses();
+  EXPECT_TRUE(robot.statusContains("kidnap suspected")) << robot.statuses();
+  expectNear(pose2DFromRos(robot.lastPose()->pose.pose), k.second.truth[0], "initialpose after the kidnap");
+}
+
 // Mode `track`: the node gets the map on `map`, seeds its own filter from the first scan and
 // publishes map -> odom.
 TEST(RosNodeTrack, MapToOdomConverges) {
@@ -253,6 +286,29 @@ TEST(RosNodeTrack, MapToOdomConverges) {
     FAIL() << "no map -> base_link: " << e.what() << "\n" << robot.statuses();
   }
   expectNear(pose2DFromRos(map_to_base.transform), t.truth.back(), "map -> base_link at the end of the trial");
+
+  // A user gives a pose on `initialpose` (RViz's 2D Pose Estimate) after carrying the robot:
+  // the filter re-seeds there, as AMCL's does.
+  const Trial& moved = k.second;
+  geometry_msgs::PoseWithCovarianceStamped given;
+  given.header.frame_id = "map";
+  given.header.stamp = ros::Time::now();
+  given.pose.pose = poseToRos(mrpt::math::TPose2D(moved.truth[0].x + 0.2, moved.truth[0].y - 0.2, moved.truth[0].phi));
+  given.pose.covariance[0] = given.pose.covariance[7] = 0.25;
+  given.pose.covariance[35] = 0.07;
+  ros::Publisher initialpose = robot.nh_.advertise<geometry_msgs::PoseWithCovarianceStamped>("initialpose", 1, true);
+  initialpose.publish(given);
+  ASSERT_TRUE(robot.publishUntil(*moved.scans[0], odom.asTPose(), 10.0, [&] {
+    return robot.statusContains("initialpose received");
+  })) << robot.statuses();
+  for (size_t i = 1; i < moved.scans.size(); ++i) {
+    odom = odom + moved.odometry[i];
+    robot.publish(*moved.scans[i], odom.asTPose());
+    ros::WallDuration(kScanPeriodS).sleep();
+  }
+  ros::WallDuration(1.0).sleep();
+  map_to_base = robot.buffer_.lookupTransform("map", "base_link", ros::Time(0), ros::Duration(5.0));
+  expectNear(pose2DFromRos(map_to_base.transform), moved.truth.back(), "map -> base_link after initialpose");
 }
 
 }  // namespace
