@@ -2,10 +2,11 @@
 # krp_relocalizer_node under load: scans at 10x a 10 Hz lidar for a minute while ~relocalize is
 # called back to back; writes reports/ros_node_load/REPORT.md. Needs a built tree (scripts/build.sh).
 #   scripts/bench_ros_node_load.sh [DURATION_S=60] [RATE_HZ=100] [OUT=reports/ros_node_load]
+# KRP_BUILD_DIR: the build tree (default: <repo>/build).
 set -euo pipefail
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 duration="${1:-60}"; rate="${2:-100}"; out="${3:-$REPO_ROOT/reports/ros_node_load}"
-build="$REPO_ROOT/build"
+build="${KRP_BUILD_DIR:-$REPO_ROOT/build}"
 mkdir -p "$out"
 work="$(mktemp -d)"
 port="$(/usr/bin/python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])')"
