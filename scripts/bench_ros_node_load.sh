@@ -17,7 +17,7 @@ trap cleanup EXIT
 roscore -p "$port" >"$work/roscore.log" 2>&1 & pids+=($!)
 timeout 30 bash -c "until rosparam list >/dev/null 2>&1; do sleep 0.2; done"
 world="$REPO_ROOT/sim_worlds/office_two_zone/office_two_zone.world.yaml"
-"$build/ros1_wrapper/krp_relocalizer_node" _map_file:="$REPO_ROOT/sim_worlds/office_two_zone/office_two_zone.yaml" \
+"$build/devel/lib/krp_relocalizer/krp_relocalizer_node" _map_file:="$REPO_ROOT/sim_worlds/office_two_zone/office_two_zone.yaml" \
     _relocalize_on_startup:=false >"$work/node.log" 2>&1 &
 node=$!; pids+=($node)
 "$build/ros1_wrapper/krp_ros_node_load" "$world" "$node" "$duration" "$rate" "$out/REPORT.md"
