@@ -155,8 +155,11 @@ int main(int argc, char** argv) {
   std::ostringstream r;
   r.precision(3);
   r << "# krp_relocalizer_node under load\n\n"
-    << "Command: `" << argv[0] << " " << argv[1] << " <pid> " << duration_s << " " << rate_hz << " " << argv[5]
-    << "` (run by `scripts/bench_ros_node_load.sh`).\n\n"
+    << "Command: `scripts/bench_ros_node_load.sh " << duration_s << " " << rate_hz
+    << "` (roscore + the node + `krp_ros_node_load`, on one machine).\n\n"
+    << "The node keeps no scan queue: the subscription holds 1 message and the relocalizer one "
+    << "waiting request, so the age of the scan behind each answer stays at one relocalization's "
+    << "duration instead of growing, and memory stays flat.\n\n"
     << "World `" << world.name << "`, lidar `" << world.default_lidar_profile << "`, backend global-matcher, relocalize "
     << "mode. Scans published at " << rate_hz << " Hz for " << duration_s << " s while `~relocalize` is called back to back.\n\n"
     << "| figure | value |\n|---|---|\n"
