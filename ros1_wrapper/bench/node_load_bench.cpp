@@ -41,19 +41,6 @@ double percentile(std::vector<double> v, double p) {
   return v[static_cast<size_t>(std::min<double>(v.size() - 1, p * (v.size() - 1) + 0.5))];
 }
 
-sensor_msgs::LaserScan toRos(const mrpt::obs::CObservation2DRangeScan& s) {
-  sensor_msgs::LaserScan m;
-  m.header.frame_id = "laser";
-  m.angle_min = -0.5f * s.aperture;
-  m.angle_increment = s.aperture / static_cast<float>(s.getScanSize() - 1);
-  m.angle_max = m.angle_min + m.angle_increment * static_cast<float>(s.getScanSize() - 1);
-  m.range_min = 0.05f;
-  m.range_max = s.maxRange;
-  for (size_t i = 0; i < s.getScanSize(); ++i)
-    m.ranges.push_back(s.getScanRangeValidity(i) ? s.getScanRange(i) : std::numeric_limits<float>::infinity());
-  return m;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -94,7 +81,7 @@ int main(int argc, char** argv) {
 
   std::atomic<bool> stop{false};
   std::atomic<long> scans_sent{0};
-  auto scan_msg = toRos(*trial.scans[0]);
+  auto scan_msg = krp::ros1::scanToRos(*trial.scans[0], ros::Time::now(), "laser");
   std::thread publisher([&] {
     ros::WallRate rate(rate_hz);
     while (!stop) {

@@ -8,6 +8,7 @@
 #include <mrpt/math/wrap2pi.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "mrpt_krp_plugin/common/input_error.h"
@@ -103,6 +104,25 @@ mrpt::obs::CObservation2DRangeScan::Ptr scanFromRos(const sensor_msgs::LaserScan
     throw InputError(what, s.str());
   }
   return scan;
+}
+
+sensor_msgs::LaserScan scanToRos(const mrpt::obs::CObservation2DRangeScan& s, const ros::Time& stamp,
+                                 const std::string& frame_id) {
+  sensor_msgs::LaserScan m;
+  m.header.stamp = stamp;
+  m.header.frame_id = frame_id;
+  const size_t n = s.getScanSize();
+  const float step = n > 1 ? s.aperture / static_cast<float>(n - 1) : 0.0f;
+  // MRPT's beams are symmetric about the sensor's x axis, listed right to left or left to right.
+  m.angle_min = (s.rightToLeft ? -0.5f : 0.5f) * s.aperture;
+  m.angle_increment = s.rightToLeft ? step : -step;
+  m.angle_max = m.angle_min + m.angle_increment * static_cast<float>(n > 0 ? n - 1 : 0);
+  m.range_min = 0.0f;
+  m.range_max = s.maxRange;
+  m.ranges.reserve(n);
+  for (size_t i = 0; i < n; ++i)
+    m.ranges.push_back(s.getScanRangeValidity(i) ? s.getScanRange(i) : std::numeric_limits<float>::infinity());
+  return m;
 }
 
 mrpt::math::TPose2D pose2DFromRos(const geometry_msgs::Pose& pose) {

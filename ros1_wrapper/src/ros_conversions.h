@@ -38,6 +38,11 @@ mrpt::obs::CObservation2DRangeScan::Ptr scanFromRos(const sensor_msgs::LaserScan
                                                     const mrpt::poses::CPose3D& laser_in_base,
                                                     const ScanCheck& check = {});
 
+/// MRPT's scan as a LaserScan in `frame_id` (the sensor pose is not part of it: publish it on tf).
+/// "No return" beams become +inf, as REP 117 asks.
+sensor_msgs::LaserScan scanToRos(const mrpt::obs::CObservation2DRangeScan& scan, const ros::Time& stamp,
+                                 const std::string& frame_id);
+
 /// A planar pose from a ROS pose (yaw from the quaternion; roll and pitch ignored).
 mrpt::math::TPose2D pose2DFromRos(const geometry_msgs::Pose& pose);
 mrpt::math::TPose2D pose2DFromRos(const geometry_msgs::Transform& tf);

@@ -69,6 +69,32 @@ TEST(RosConversions, ReversedScansKeepTheirGeometry) {
   EXPECT_NEAR(p.y, 4.0 * std::sin(a), 1e-3);
 }
 
+TEST(RosConversions, MrptScansRoundTripThroughLaserScan) {
+  for (const char* profile : {"omni_12m", "safety_270"}) {
+    Rng rng(2);
+    const auto room = krp::test::asymmetricRoom();
+    auto original = ScanSimulator(lidarProfileByName(profile)).simulate(room, mrpt::poses::CPose2D(5.5, 2.1, 0.4), rng);
+    for (bool right_to_left : {true, false}) {
+      original->rightToLeft = right_to_left;
+      const auto msg = scanToRos(*original, ros::Time(5.0), "laser");
+      const auto back = scanFromRos(msg, mrpt::poses::CPose3D(original->sensorPose));
+      mrpt::maps::CSimplePointsMap a, b;
+      // Every return, not MRPT's default thinning to 2 cm apart.
+      a.insertionOptions.minDistBetweenLaserPoints = b.insertionOptions.minDistBetweenLaserPoints = 0;
+      a.loadFromRangeScan(*original);
+      b.loadFromRangeScan(*back);
+      ASSERT_EQ(a.size(), b.size()) << profile << " right_to_left " << right_to_left;
+      for (size_t i = 0; i < a.size(); i += 37) {
+        float ax, ay, bx, by;
+        a.getPoint(i, ax, ay);
+        b.getPoint(i, bx, by);
+        EXPECT_NEAR(ax, bx, 1e-3) << profile << " beam " << i;
+        EXPECT_NEAR(ay, by, 1e-3) << profile << " beam " << i;
+      }
+    }
+  }
+}
+
 TEST(RosConversions, BadReadingsBecomeNoReturns) {
   auto msg = fullCircleScan(100, 2.0f);
   msg.ranges[0] = std::numeric_limits<float>::quiet_NaN();

@@ -36,20 +36,6 @@ constexpr double kMaxErrorDeg = 5.0;
 constexpr double kScanPeriodS = 0.1;
 const char* kWorld = KRP_SOURCE_DIR "/sim_worlds/office_two_zone/office_two_zone.world.yaml";
 
-sensor_msgs::LaserScan toRos(const mrpt::obs::CObservation2DRangeScan& s, const ros::Time& stamp) {
-  sensor_msgs::LaserScan m;
-  m.header.stamp = stamp;
-  m.header.frame_id = "laser";
-  m.angle_min = -0.5f * s.aperture;
-  m.angle_increment = s.aperture / static_cast<float>(s.getScanSize() - 1);
-  m.angle_max = m.angle_min + m.angle_increment * static_cast<float>(s.getScanSize() - 1);
-  m.range_min = 0.05f;
-  m.range_max = s.maxRange;
-  for (size_t i = 0; i < s.getScanSize(); ++i)
-    m.ranges.push_back(s.getScanRangeValidity(i) ? s.getScanRange(i) : std::numeric_limits<float>::infinity());
-  return m;
-}
-
 nav_msgs::OccupancyGrid toRos(const mrpt::maps::COccupancyGridMap2D& g) {
   nav_msgs::OccupancyGrid m;
   m.header.frame_id = "map";
@@ -95,9 +81,7 @@ class Robot {
     t.transform.translation.y = p.position.y;
     t.transform.rotation = p.orientation;
     broadcaster_.sendTransform(t);
-    auto msg = toRos(scan, stamp);
-    msg.header.frame_id = frame;
-    scan_pub_.publish(msg);
+    scan_pub_.publish(scanToRos(scan, stamp, frame));
   }
 
   /// Publishes the same scan every kScanPeriodS until `done` or the timeout; true if done.

@@ -5,7 +5,6 @@
 #include <sensor_msgs/LaserScan.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include <limits>
 
 #include "ros_conversions.h"
 
@@ -41,17 +40,7 @@ void writeTrialBag(const Trial& trial, const std::string& path, const mrpt::math
     tf2_msgs::TFMessage tf;
     tf.transforms.push_back(transform("odom", "base_link", odom.asTPose(), stamp));
     bag.write("/tf", stamp, tf);
-    const auto& s = *trial.scans[i];
-    sensor_msgs::LaserScan m;
-    m.header.stamp = stamp;
-    m.header.frame_id = "laser";
-    m.angle_min = -0.5f * s.aperture;
-    m.angle_increment = s.aperture / static_cast<float>(s.getScanSize() - 1);
-    m.angle_max = m.angle_min + m.angle_increment * static_cast<float>(s.getScanSize() - 1);
-    m.range_min = 0.05f;
-    m.range_max = s.maxRange;
-    for (size_t b = 0; b < s.getScanSize(); ++b)
-      m.ranges.push_back(s.getScanRangeValidity(b) ? s.getScanRange(b) : std::numeric_limits<float>::infinity());
+    const auto m = scanToRos(*trial.scans[i], stamp, "laser");
     bag.write("/scan", stamp, m);
   }
   bag.close();
