@@ -68,6 +68,13 @@ class Robot {
     static_broadcaster_.sendTransform(laser);
   }
 
+  // The spinner threads may be inside a callback: unsubscribe (which waits for it) before the
+  // members the callbacks use are destroyed.
+  ~Robot() {
+    pose_sub_.shutdown();
+    status_sub_.shutdown();
+  }
+
   /// One scan at `odom`, with its transform, stamped now.
   void publish(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& odom,
                const std::string& frame = "laser") {
@@ -242,6 +249,29 @@ TEST(RosNodeRelocalize, KidnapBesideAmclIsDetectedAndRelocalized) {
   ASSERT_TRUE(robot.lastPose().has_value()) << robot.statuses();
   EXPECT_TRUE(robot.statusContains("kidnap suspected")) << robot.statuses();
   expectNear(pose2DFromRos(robot.lastPose()->pose.pose), k.second.truth[0], "initialpose after the kidnap");
+}
+
+// backend `learned` with the shipped office models: the node loads them and answers with the
+// pipeline's own verdict (the models are weak, so "not localized" is an honest answer; what must
+// not happen is a crash, a hang or an answer that is not from the pipeline).
+TEST(RosNodeLearned, AnswersWithThePipelinesVerdict) {
+  Kidnaps k;
+  Robot robot;
+  ASSERT_TRUE(waitForService("krp_relocalizer/relocalize"));
+  const mrpt::math::TPose2D odom(0, 0, 0);
+  robot.publishUntil(*k.first.scans[0], odom, 1.0, [] { return false; });
+  std_srvs::Trigger trigger;
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/relocalize", trigger));
+  const std::string& m = trigger.response.message;
+  if (trigger.response.success) {
+    EXPECT_NE(m.find("confidence="), std::string::npos) << m;
+  } else {
+    EXPECT_EQ(m.find("no usable scan"), std::string::npos) << m;
+    EXPECT_EQ(m.find("no map"), std::string::npos) << m;
+    EXPECT_EQ(m.find("trigger_timeout"), std::string::npos) << m;
+    EXPECT_NE(m.find("not localized: "), std::string::npos) << m;
+  }
+  EXPECT_TRUE(robot.statusContains("backend learned")) << robot.statuses();
 }
 
 // Mode `track`: the node gets the map on `map`, seeds its own filter from the first scan and
