@@ -274,6 +274,40 @@ TEST(RosNodeLearned, AnswersWithThePipelinesVerdict) {
   EXPECT_TRUE(robot.statusContains("backend learned")) << robot.statuses();
 }
 
+// The map comes on a topic and is re-published mid-run: a good one is re-read, a broken one is
+// rejected and the previous one kept; either way the node goes on relocalizing.
+TEST(RosNodeRelocalize, RepublishedMapsAreRereadAndBrokenOnesRejected) {
+  Kidnaps k;
+  Robot robot;
+  auto good = toRos(*k.map.grid);
+  robot.map_pub_.publish(good);
+  ASSERT_TRUE(waitForService("krp_relocalizer/relocalize"));
+  const mrpt::math::TPose2D odom(0, 0, 0);
+  ASSERT_TRUE(robot.publishUntil(*k.first.scans[0], odom, 30.0, [&] { return robot.statusContains("map in use"); }))
+      << robot.statuses();
+  auto broken = good;
+  broken.data.resize(broken.data.size() / 2);
+  robot.map_pub_.publish(broken);
+  ASSERT_TRUE(robot.publishUntil(*k.first.scans[0], odom, 10.0, [&] {
+    return robot.statusContains("map rejected, keeping the previous one");
+  })) << robot.statuses();
+  std_srvs::Trigger trigger;
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/relocalize", trigger));
+  EXPECT_TRUE(trigger.response.success) << trigger.response.message;
+  // A good map again (re-stamped): re-read, and relocalization still works on it.
+  good.header.stamp = ros::Time::now();
+  robot.map_pub_.publish(good);
+  ros::WallDuration(2.0).sleep();
+  robot.publishUntil(*k.second.scans[0], odom, 1.0, [] { return false; });
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/relocalize", trigger));
+  EXPECT_TRUE(trigger.response.success) << trigger.response.message;
+  int maps_in_use = 0;
+  for (std::string all = robot.statuses(); all.find("map in use") != std::string::npos;
+       all = all.substr(all.find("map in use") + 1))
+    ++maps_in_use;
+  EXPECT_EQ(maps_in_use, 2) << robot.statuses();
+}
+
 // Mode `track`: the node gets the map on `map`, seeds its own filter from the first scan and
 // publishes map -> odom.
 TEST(RosNodeTrack, MapToOdomConverges) {
