@@ -2,7 +2,6 @@
 #include "mrpt_krp_plugin/filter/odometry_tracker.h"
 
 #include <mrpt/math/wrap2pi.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <cmath>
@@ -28,16 +27,8 @@ std::optional<TrackerUpdate> OdometryTracker::update(const mrpt::obs::CObservati
                             std::abs(mrpt::math::wrapToPi(motion.phi())) >= params_.update_min_a_deg * M_PI / 180.0;
   if (localizer_.isInitialized() && !moved_enough) return std::nullopt;
 
-  RawlogStep step;
-  step.action = mrpt::obs::CActionCollection::Create();
-  mrpt::obs::CActionRobotMovement2D move;
-  move.computeFromOdometry(motion, params_.odometry.toMrpt());
-  step.action->insert(move);
-  step.observations = mrpt::obs::CSensoryFrame::Create();
-  step.observations->insert(scan);
-
   TrackerUpdate u;
-  u.estimate = localizer_.update(step);
+  u.estimate = localizer_.update(makeRawlogStep(motion, scan, params_.odometry));
   // map <- odom = (map <- base) * (odom <- base)^-1
   u.map_to_odom = (mrpt::poses::CPose2D(u.estimate.mean) + (mrpt::poses::CPose2D() - odom_now)).asTPose();
   odom_at_last_update_ = odom_pose;

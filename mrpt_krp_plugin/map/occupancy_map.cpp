@@ -22,6 +22,10 @@ mrpt::math::TPose2D OccupancyMap::toGridFrame(const mrpt::math::TPose2D& p) cons
   return {ox + c * dx + s * dy, oy - s * dx + c * dy, mrpt::math::wrapToPi(p.phi - yaw_rad)};
 }
 
+double occupancyFromGridValue(int value) {
+  return (value >= 0 && value <= 100) ? value / 100.0 : kUnknownOccupancy;
+}
+
 std::size_t countFreeCells(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p) {
   std::size_t n = 0;
   for (unsigned y = 0; y < grid.getSizeY(); ++y)

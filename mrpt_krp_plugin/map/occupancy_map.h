@@ -24,6 +24,13 @@ struct OccupancyMap {
   mrpt::math::TPose2D toGridFrame(const mrpt::math::TPose2D& source_pose) const;
 };
 
+/// p(occupied) of a cell whose state is unknown.
+constexpr double kUnknownOccupancy = 0.5;
+
+/// A nav_msgs/OccupancyGrid value as p(occupied): 0..100 are percent, anything else (-1) is
+/// unknown. map_server's `raw` image mode stores the same values as pixels.
+double occupancyFromGridValue(int value);
+
 /// Thresholds that classify a cell. MRPT stores occupancy as probability of occupation.
 struct CellClassParams {
   double max_free_occupancy = 0.35;      ///< a cell with p(occupied) below this is free [0..1]

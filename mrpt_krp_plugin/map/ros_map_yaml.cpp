@@ -25,7 +25,6 @@ namespace {
 constexpr uint8_t kPgmOccupied = 0;
 constexpr uint8_t kPgmFree = 254;
 constexpr uint8_t kPgmUnknown = 205;
-constexpr double kUnknownOccupancy = 0.5;
 
 template <typename T>
 T scalar(const YAML::Node& node, const std::string& key, const std::string& file) {
@@ -144,8 +143,7 @@ OccupancyMap readRosMap(const std::string& yaml_path, const MapSanityLimits& lim
     for (int cx = 0; cx < w; ++cx) {
       double occ = kUnknownOccupancy;
       if (m.mode == "raw") {
-        // raw: the pixel is the OccupancyGrid value itself (0..100, anything else unknown).
-        if (g[cx] <= 100) occ = g[cx] / 100.0;
+        occ = occupancyFromGridValue(g[cx]);
       } else if (a == nullptr || a[cx] != 0) {
         const double p = m.negate ? g[cx] / 255.0 : (255.0 - g[cx]) / 255.0;
         if (p > m.occupied_thresh) occ = 1.0;

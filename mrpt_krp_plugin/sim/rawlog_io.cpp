@@ -27,19 +27,21 @@ mrpt::obs::CActionRobotMovement2D::TMotionModelOptions OdometryModelParams::toMr
   return o;
 }
 
+RawlogStep makeRawlogStep(const mrpt::poses::CPose2D& odometry_increment,
+                          const mrpt::obs::CObservation2DRangeScan::Ptr& scan, const OdometryModelParams& model) {
+  RawlogStep s;
+  s.action = mrpt::obs::CActionCollection::Create();
+  mrpt::obs::CActionRobotMovement2D move;
+  move.computeFromOdometry(odometry_increment, model.toMrpt());
+  s.action->insert(move);
+  s.observations = mrpt::obs::CSensoryFrame::Create();
+  s.observations->insert(scan);
+  return s;
+}
+
 std::vector<RawlogStep> trialToSteps(const Trial& trial, const OdometryModelParams& model) {
-  const auto options = model.toMrpt();
   std::vector<RawlogStep> steps;
-  for (size_t i = 0; i < trial.scans.size(); ++i) {
-    RawlogStep s;
-    s.action = mrpt::obs::CActionCollection::Create();
-    mrpt::obs::CActionRobotMovement2D move;
-    move.computeFromOdometry(trial.odometry[i], options);
-    s.action->insert(move);
-    s.observations = mrpt::obs::CSensoryFrame::Create();
-    s.observations->insert(trial.scans[i]);
-    steps.push_back(std::move(s));
-  }
+  for (size_t i = 0; i < trial.scans.size(); ++i) steps.push_back(makeRawlogStep(trial.odometry[i], trial.scans[i], model));
   return steps;
 }
 

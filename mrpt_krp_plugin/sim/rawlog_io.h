@@ -31,6 +31,10 @@ struct RawlogStep {
   mrpt::obs::CSensoryFrame::Ptr observations;
 };
 
+/// One step: the odometry increment since the previous step, with `model`'s noise, and a scan.
+RawlogStep makeRawlogStep(const mrpt::poses::CPose2D& odometry_increment,
+                          const mrpt::obs::CObservation2DRangeScan::Ptr& scan, const OdometryModelParams& model = {});
+
 /// Writes a trial as an MRPT rawlog (actions-observations format, one pair per step) and
 /// a ground-truth text file (`step x y phi distance_m`, grid frame), atomically.
 void writeTrialRawlog(const Trial& trial, const std::string& rawlog_path, const std::string& ground_truth_path,

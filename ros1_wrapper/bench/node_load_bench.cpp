@@ -68,12 +68,7 @@ int main(int argc, char** argv) {
       });
   tf2_ros::StaticTransformBroadcaster statics;
   tf2_ros::TransformBroadcaster tf;
-  geometry_msgs::TransformStamped laser;
-  laser.header.stamp = ros::Time::now();
-  laser.header.frame_id = "base_link";
-  laser.child_frame_id = "laser";
-  laser.transform.rotation.w = 1.0;
-  statics.sendTransform(laser);
+  statics.sendTransform(krp::ros1::transformToRos({0, 0, 0}, "base_link", "laser", ros::Time::now()));
   if (!ros::service::waitForService("krp_relocalizer/relocalize", ros::Duration(30))) {
     std::cerr << "the node's ~relocalize never appeared\n";
     return 1;
@@ -86,12 +81,7 @@ int main(int argc, char** argv) {
     ros::WallRate rate(rate_hz);
     while (!stop) {
       const ros::Time now = ros::Time::now();
-      geometry_msgs::TransformStamped t;
-      t.header.stamp = now;
-      t.header.frame_id = "odom";
-      t.child_frame_id = "base_link";
-      t.transform.rotation.w = 1.0;
-      tf.sendTransform(t);
+      tf.sendTransform(krp::ros1::transformToRos({0, 0, 0}, "odom", "base_link", now));
       scan_msg.header.stamp = now;
       scan_pub.publish(scan_msg);
       ++scans_sent;

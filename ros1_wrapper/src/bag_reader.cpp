@@ -7,7 +7,6 @@
 #include <tf2/exceptions.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <filesystem>
@@ -50,7 +49,6 @@ BagSteps readBag(const std::string& path, const BagReadParams& params) {
     rosbag::View scans(bag, rosbag::TopicQuery(params.scan_topic));
     if (scans.size() == 0) throw InputError(path, "no messages on the scan topic '" + params.scan_topic + "'");
     std::optional<mrpt::poses::CPose2D> previous_odom;
-    const auto motion_model = params.odometry.toMrpt();
     for (const auto& m : scans) {
       const auto msg = m.instantiate<sensor_msgs::LaserScan>();
       if (!msg) throw InputError(path, "topic '" + params.scan_topic + "' does not hold sensor_msgs/LaserScan");
@@ -77,14 +75,8 @@ BagSteps readBag(const std::string& path, const BagReadParams& params) {
         continue;
       }
       scan->timestamp = mrpt::Clock::fromDouble(msg->header.stamp.toSec());
-      RawlogStep step;
-      step.action = mrpt::obs::CActionCollection::Create();
-      mrpt::obs::CActionRobotMovement2D move;
-      move.computeFromOdometry(previous_odom ? odom - *previous_odom : mrpt::poses::CPose2D(), motion_model);
-      step.action->insert(move);
-      step.observations = mrpt::obs::CSensoryFrame::Create();
-      step.observations->insert(scan);
-      out.steps.push_back(std::move(step));
+      out.steps.push_back(
+          makeRawlogStep(previous_odom ? odom - *previous_odom : mrpt::poses::CPose2D(), scan, params.odometry));
       previous_odom = odom;
     }
   } catch (const rosbag::BagException& e) {

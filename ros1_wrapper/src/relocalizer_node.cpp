@@ -137,6 +137,11 @@ void RelocalizerNode::useMap(OccupancyMap map) {
   report(s.str(), false);
 }
 
+std::shared_ptr<RelocalizerNode::MapState> RelocalizerNode::mapState() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return map_state_;
+}
+
 void RelocalizerNode::onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
   try {
     useMap(occupancyMapFromRos(*msg));
@@ -146,11 +151,7 @@ void RelocalizerNode::onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
 }
 
 void RelocalizerNode::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
-  std::shared_ptr<MapState> state;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    state = map_state_;
-  }
+  const std::shared_ptr<MapState> state = mapState();
   if (!state) {
     report("scan ignored: no map yet", true);
     return;
@@ -180,7 +181,6 @@ void RelocalizerNode::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     latest_ = request;
-    latest_stamp_ = msg->header.stamp;
     relocalize_now = relocalization_pending_ && params_.mode == "relocalize";
     relocalization_pending_ = relocalization_pending_ && !relocalize_now;
     if (params_.mode == "track" && relocalization_pending_) {
@@ -204,11 +204,7 @@ void RelocalizerNode::onAmclPose(const geometry_msgs::PoseWithCovarianceStamped:
 }
 
 void RelocalizerNode::onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
-  std::shared_ptr<MapState> state;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    state = map_state_;
-  }
+  const std::shared_ptr<MapState> state = mapState();
   if (!state) {
     report("initialpose ignored: no map yet", true);
     return;
@@ -268,7 +264,7 @@ std::optional<std::shared_future<RelocalizationReply>> RelocalizerNode::relocali
       *why_not = "no usable scan yet";
       return std::nullopt;
     }
-    const double age = (ros::Time::now() - latest_stamp_).toSec();
+    const double age = (ros::Time::now() - fromNs(latest_->stamp_ns)).toSec();
     if (age > params_.max_scan_age_s) {
       std::ostringstream s;
       s << "the newest usable scan is " << age << " s old (max_scan_age_s " << params_.max_scan_age_s << ")";
@@ -410,16 +406,9 @@ void RelocalizerNode::broadcastMapToOdom(const ros::Time& scan_stamp) {
     t = map_to_odom_;
   }
   if (!t) return;
-  geometry_msgs::TransformStamped msg;
   // Future-dated like AMCL's, so that lookups at the latest scan time succeed until the next update.
-  msg.header.stamp = scan_stamp + ros::Duration(params_.transform_tolerance_s);
-  msg.header.frame_id = params_.global_frame;
-  msg.child_frame_id = params_.odom_frame;
-  const auto pose = poseToRos(*t);
-  msg.transform.translation.x = pose.position.x;
-  msg.transform.translation.y = pose.position.y;
-  msg.transform.rotation = pose.orientation;
-  tf_broadcaster_.sendTransform(msg);
+  tf_broadcaster_.sendTransform(transformToRos(*t, params_.global_frame, params_.odom_frame,
+                                               scan_stamp + ros::Duration(params_.transform_tolerance_s)));
 }
 
 void RelocalizerNode::publishHypotheses(const Ranking& ranking, const OccupancyMap& map, const ros::Time& stamp) {

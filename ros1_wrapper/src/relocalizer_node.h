@@ -72,6 +72,7 @@ class RelocalizerNode {
   std::optional<std::shared_future<RelocalizationReply>> relocalizeLatest(std::string* why_not);
   void onReply(const RelocalizationReply& reply, const std::shared_ptr<const OccupancyMap>& map);
   void track(TrackJob& job);
+  std::shared_ptr<MapState> mapState();  ///< the map in use, or null before the first
   void checkKidnap(const mrpt::obs::CObservation2DRangeScan& scan, const ros::Time& stamp);
   void publishHypotheses(const Ranking& ranking, const OccupancyMap& map, const ros::Time& stamp);
   void broadcastMapToOdom(const ros::Time& scan_stamp);
@@ -90,7 +91,6 @@ class RelocalizerNode {
   std::mutex mutex_;  ///< guards everything below
   std::shared_ptr<MapState> map_state_;
   std::optional<RelocalizationRequest> latest_;
-  ros::Time latest_stamp_;
   bool relocalization_pending_ = false;  ///< startup, service or kidnap: relocalize at the next scan
   std::optional<mrpt::math::TPose2D> amcl_pose_;  ///< grid frame
   ros::Time amcl_pose_stamp_;

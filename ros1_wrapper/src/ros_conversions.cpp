@@ -16,8 +16,15 @@
 namespace krp::ros1 {
 
 namespace {
-// OccupancyGrid's "unknown" (-1) as p(occupied): neither free nor an obstacle.
-constexpr double kUnknownOccupancy = 0.5;
+// Rotating the frame by `yaw_rad` leaves the yaw variance unchanged; the xy block turns with it.
+mrpt::math::CMatrixDouble33 rotateCovarianceXy(const mrpt::math::CMatrixDouble33& cov, double yaw_rad) {
+  const double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
+  mrpt::math::CMatrixDouble33 rot;
+  rot.setIdentity();
+  rot(0, 0) = c, rot(0, 1) = -s, rot(1, 0) = s, rot(1, 1) = c;
+  return mrpt::math::CMatrixDouble33(rot.asEigen() * cov.asEigen() * rot.asEigen().transpose());
+}
+
 // Beam spacing may disagree with (angle_max - angle_min) / increment by float rounding.
 constexpr double kBeamCountTolerance = 0.01;
 // The longest arrow, for a hypothesis of confidence 1 [m].
@@ -47,16 +54,10 @@ OccupancyMap occupancyMapFromRos(const nav_msgs::OccupancyGrid& msg) {
   auto grid = std::make_shared<mrpt::maps::COccupancyGridMap2D>();
   grid->setSize(o.position.x, o.position.x + info.width * info.resolution, o.position.y,
                 o.position.y + info.height * info.resolution, info.resolution, static_cast<float>(kUnknownOccupancy));
-  std::size_t free_cells = 0;
-  for (unsigned y = 0; y < info.height; ++y) {
-    for (unsigned x = 0; x < info.width; ++x) {
-      const int8_t v = msg.data[static_cast<size_t>(y) * info.width + x];
-      const double occ = (v >= 0 && v <= 100) ? v / 100.0 : kUnknownOccupancy;
-      grid->setCell(x, y, static_cast<float>(1.0 - occ));
-      if (occ < CellClassParams{}.max_free_occupancy) ++free_cells;
-    }
-  }
-  if (free_cells == 0) throw InputError(what, "the map has no free cell");
+  for (unsigned y = 0; y < info.height; ++y)
+    for (unsigned x = 0; x < info.width; ++x)
+      grid->setCell(x, y, static_cast<float>(1.0 - occupancyFromGridValue(msg.data[static_cast<size_t>(y) * info.width + x])));
+  if (countFreeCells(*grid) == 0) throw InputError(what, "the map has no free cell");
   return OccupancyMap{grid, yaw, "topic " + what};
 }
 
@@ -152,6 +153,19 @@ geometry_msgs::Pose poseToRos(const mrpt::math::TPose2D& pose) {
   return p;
 }
 
+geometry_msgs::TransformStamped transformToRos(const mrpt::math::TPose2D& pose, const std::string& parent,
+                                               const std::string& child, const ros::Time& stamp) {
+  geometry_msgs::TransformStamped t;
+  t.header.stamp = stamp;
+  t.header.frame_id = parent;
+  t.child_frame_id = child;
+  const auto p = poseToRos(pose);
+  t.transform.translation.x = p.position.x;
+  t.transform.translation.y = p.position.y;
+  t.transform.rotation = p.orientation;
+  return t;
+}
+
 boost::array<double, 36> covarianceToRos(const mrpt::math::CMatrixDouble33& cov) {
   boost::array<double, 36> out{};
   const int index[3] = {0, 1, 5};  // x, y, yaw in (x, y, z, roll, pitch, yaw)
@@ -175,11 +189,7 @@ mrpt::math::CMatrixDouble33 covarianceFromRos(const boost::array<double, 36>& co
       m(i, i) = defaults[i];
     }
   }
-  const double c = std::cos(-grid_yaw_rad), s = std::sin(-grid_yaw_rad);
-  mrpt::math::CMatrixDouble33 rot;
-  rot.setIdentity();
-  rot(0, 0) = c, rot(0, 1) = -s, rot(1, 0) = s, rot(1, 1) = c;
-  return mrpt::math::CMatrixDouble33(rot.asEigen() * m.asEigen() * rot.asEigen().transpose());
+  return rotateCovarianceXy(m, -grid_yaw_rad);
 }
 
 geometry_msgs::PoseWithCovarianceStamped initialPoseMsg(const PoseHypothesis& best, const OccupancyMap& map,
@@ -187,13 +197,7 @@ geometry_msgs::PoseWithCovarianceStamped initialPoseMsg(const PoseHypothesis& be
   geometry_msgs::PoseWithCovarianceStamped m;
   m.header = header;
   m.pose.pose = poseToRos(map.toSourceFrame(best.pose));
-  // Rotating the frame leaves the yaw variance unchanged; the xy block turns with it.
-  const double c = std::cos(map.yaw_rad), s = std::sin(map.yaw_rad);
-  mrpt::math::CMatrixDouble33 rot;
-  rot.setIdentity();
-  rot(0, 0) = c, rot(0, 1) = -s, rot(1, 0) = s, rot(1, 1) = c;
-  const mrpt::math::CMatrixDouble33 turned(rot.asEigen() * best.cov.asEigen() * rot.asEigen().transpose());
-  m.pose.covariance = covarianceToRos(turned);
+  m.pose.covariance = covarianceToRos(rotateCovarianceXy(best.cov, map.yaw_rad));
   return m;
 }
 

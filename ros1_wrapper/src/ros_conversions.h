@@ -48,6 +48,10 @@ mrpt::math::TPose2D pose2DFromRos(const geometry_msgs::Pose& pose);
 mrpt::math::TPose2D pose2DFromRos(const geometry_msgs::Transform& tf);
 geometry_msgs::Pose poseToRos(const mrpt::math::TPose2D& pose);
 
+/// `child` at planar `pose` in `parent`, as a tf message stamped `stamp`.
+geometry_msgs::TransformStamped transformToRos(const mrpt::math::TPose2D& pose, const std::string& parent,
+                                               const std::string& child, const ros::Time& stamp);
+
 /// The (x, y, yaw) covariance placed in ROS's 6x6 (x, y, z, roll, pitch, yaw) row-major
 /// layout: yaw variance at index 35, as AMCL reads it.
 boost::array<double, 36> covarianceToRos(const mrpt::math::CMatrixDouble33& cov);

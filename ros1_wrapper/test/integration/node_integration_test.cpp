@@ -60,12 +60,7 @@ class Robot {
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     pose_sub_ = nh_.subscribe("initialpose", 5, &Robot::onPose, this);
     status_sub_ = nh_.subscribe("krp_relocalizer/status", 50, &Robot::onStatus, this);
-    geometry_msgs::TransformStamped laser;
-    laser.header.stamp = ros::Time::now();
-    laser.header.frame_id = "base_link";
-    laser.child_frame_id = "laser";
-    laser.transform.rotation.w = 1.0;
-    static_broadcaster_.sendTransform(laser);
+    static_broadcaster_.sendTransform(transformToRos({0, 0, 0}, "base_link", "laser", ros::Time::now()));
   }
 
   // The spinner threads may be inside a callback: unsubscribe (which waits for it) before the
@@ -79,15 +74,7 @@ class Robot {
   void publish(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& odom,
                const std::string& frame = "laser") {
     const ros::Time stamp = ros::Time::now();
-    geometry_msgs::TransformStamped t;
-    t.header.stamp = stamp;
-    t.header.frame_id = "odom";
-    t.child_frame_id = "base_link";
-    const auto p = poseToRos(odom);
-    t.transform.translation.x = p.position.x;
-    t.transform.translation.y = p.position.y;
-    t.transform.rotation = p.orientation;
-    broadcaster_.sendTransform(t);
+    broadcaster_.sendTransform(transformToRos(odom, "odom", "base_link", stamp));
     scan_pub_.publish(scanToRos(scan, stamp, frame));
   }
 

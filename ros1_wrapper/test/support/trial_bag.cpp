@@ -5,25 +5,10 @@
 #include <sensor_msgs/LaserScan.h>
 #include <tf2_msgs/TFMessage.h>
 
-
 #include "ros_conversions.h"
 
 namespace krp::ros1::test {
 
-namespace {
-geometry_msgs::TransformStamped transform(const std::string& parent, const std::string& child,
-                                          const mrpt::math::TPose2D& p, const ros::Time& stamp) {
-  geometry_msgs::TransformStamped t;
-  t.header.stamp = stamp;
-  t.header.frame_id = parent;
-  t.child_frame_id = child;
-  const auto pose = poseToRos(p);
-  t.transform.translation.x = pose.position.x;
-  t.transform.translation.y = pose.position.y;
-  t.transform.rotation = pose.orientation;
-  return t;
-}
-}  // namespace
 
 void writeTrialBag(const Trial& trial, const std::string& path, const mrpt::math::TPose2D& odom_origin) {
   rosbag::Bag bag(path, rosbag::bagmode::Write);
@@ -31,14 +16,14 @@ void writeTrialBag(const Trial& trial, const std::string& path, const mrpt::math
   tf2_msgs::TFMessage statics;
   const auto& mount = trial.scans.front()->sensorPose;
   statics.transforms.push_back(
-      transform("base_link", "laser", mrpt::math::TPose2D(mount.x(), mount.y(), mount.yaw()), start));
+      transformToRos(mrpt::math::TPose2D(mount.x(), mount.y(), mount.yaw()), "base_link", "laser", start));
   bag.write("/tf_static", start, statics);
   mrpt::poses::CPose2D odom(odom_origin);
   for (size_t i = 0; i < trial.scans.size(); ++i) {
     const ros::Time stamp = start + ros::Duration(0.1 * static_cast<double>(i));
     odom = odom + trial.odometry[i];
     tf2_msgs::TFMessage tf;
-    tf.transforms.push_back(transform("odom", "base_link", odom.asTPose(), stamp));
+    tf.transforms.push_back(transformToRos(odom.asTPose(), "odom", "base_link", stamp));
     bag.write("/tf", stamp, tf);
     const auto m = scanToRos(*trial.scans[i], stamp, "laser");
     bag.write("/scan", stamp, m);
