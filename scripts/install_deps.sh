@@ -21,6 +21,8 @@ if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
 APT_PACKAGES=(
   # toolchain
   build-essential cmake git pkg-config python3-venv python3-pip unzip ca-certificates
+  # the sanitizer and libFuzzer build (scripts/run_sanitizers.sh)
+  clang libclang-rt-14-dev
   # core libraries
   libmrpt-dev mrpt-apps mrpt-common libopencv-dev liboctomap-dev libeigen3-dev
   libgtest-dev libgmock-dev libyaml-cpp-dev nlohmann-json3-dev zlib1g-dev

@@ -2,6 +2,8 @@
 #include "mrpt_krp_plugin/inference/model_manifest.h"
 
 #include <fstream>
+#include <type_traits>
+
 #include <nlohmann/json.hpp>
 
 #include "mrpt_krp_plugin/common/input_error.h"
@@ -28,10 +30,21 @@ T field(const json& root, const std::string& dotted, const std::string& file) {
     if (dot == std::string::npos) break;
     start = dot + 1;
   }
+  // nlohmann converts a float to an integer with a plain cast, undefined beyond the integer's
+  // range (found by model_manifest_fuzzer): integers must be written as integers.
+  const auto wrong_type = [&] { return InputError(file, "field '" + dotted + "' has the wrong type"); };
+  if constexpr (std::is_integral_v<T>) {
+    if (!node->is_number_integer()) throw wrong_type();
+  }
+  if constexpr (std::is_same_v<T, std::vector<int64_t>>) {
+    if (!node->is_array()) throw wrong_type();
+    for (const auto& e : *node)
+      if (!e.is_number_integer()) throw wrong_type();
+  }
   try {
     return node->get<T>();
   } catch (const json::exception&) {
-    throw InputError(file, "field '" + dotted + "' has the wrong type");
+    throw wrong_type();
   }
 }
 
@@ -68,7 +81,7 @@ ModelManifest readModelManifest(const std::string& folder) {
   json root;
   try {
     root = json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number too large
     throw InputError(file, std::string("not valid JSON: ") + e.what());
   }
   if (field<std::string>(root, "format", file) != kFormat)

@@ -13,8 +13,8 @@ bool endsWith(const std::string& s, const std::string& suffix) {
 
 OccupancyMap loadOccupancyMap(const std::string& path, const MapLoadParams& params) {
   if (endsWith(path, ".yaml") || endsWith(path, ".yml")) return readRosMap(path, params.limits);
-  if (endsWith(path, ".gridmap") || endsWith(path, ".gridmap.gz")) return readMrptGridmap(path);
-  if (endsWith(path, ".bt") || endsWith(path, ".ot")) return readOctomapSlice(path, params.octomap);
+  if (endsWith(path, ".gridmap") || endsWith(path, ".gridmap.gz")) return readMrptGridmap(path, params.limits);
+  if (endsWith(path, ".bt") || endsWith(path, ".ot")) return readOctomapSlice(path, params.octomap, params.limits);
   throw InputError(path, "unsupported map format (expected .yaml/.yml, .gridmap, .gridmap.gz, .bt or .ot)");
 }
 

@@ -25,7 +25,8 @@ bool startsWith(const std::string& path, const char* header) {
 }
 }  // namespace
 
-OccupancyMap sliceOctree(const octomap::OcTree& tree, const OctomapSliceParams& p, const std::string& source) {
+OccupancyMap sliceOctree(const octomap::OcTree& tree, const OctomapSliceParams& p, const std::string& source,
+                         const MapSanityLimits& limits) {
   if (!(std::isfinite(p.z_min_m) && std::isfinite(p.z_max_m) && p.z_min_m < p.z_max_m))
     throw InputError(source, "slice band must satisfy z_min < z_max (finite)");
   if (tree.size() == 0) throw InputError(source, "the octree is empty");
@@ -36,6 +37,8 @@ OccupancyMap sliceOctree(const octomap::OcTree& tree, const OctomapSliceParams& 
   if (z1 < p.z_min_m || z0 > p.z_max_m)
     throw InputError(source, "the octree spans z in [" + std::to_string(z0) + ", " + std::to_string(z1) +
                                  "] m, which misses the slice band");
+  // A corrupt file can hold a tiny resolution or far-flung nodes: check before allocating.
+  checkGridGeometry({x0, y0, res, std::ceil((x1 - x0) / res), std::ceil((y1 - y0) / res)}, limits, source);
   auto grid = std::make_shared<mrpt::maps::COccupancyGridMap2D>();
   grid->setSize(x0, x1, y0, y1, static_cast<float>(res), kUnknownFreeness);
   const int w = static_cast<int>(grid->getSizeX()), h = static_cast<int>(grid->getSizeY());
@@ -65,7 +68,8 @@ OccupancyMap sliceOctree(const octomap::OcTree& tree, const OctomapSliceParams& 
   return OccupancyMap{grid, 0.0, source};
 }
 
-OccupancyMap readOctomapSlice(const std::string& path, const OctomapSliceParams& params) {
+OccupancyMap readOctomapSlice(const std::string& path, const OctomapSliceParams& params,
+                              const MapSanityLimits& limits) {
   if (!std::filesystem::exists(path)) throw InputError(path, "file does not exist");
   std::unique_ptr<octomap::OcTree> tree;
   if (startsWith(path, kBinaryHeader)) {
@@ -81,7 +85,7 @@ OccupancyMap readOctomapSlice(const std::string& path, const OctomapSliceParams&
   } else {
     throw InputError(path, "not an OctoMap file (no '# Octomap OcTree' header)");
   }
-  return sliceOctree(*tree, params, path);
+  return sliceOctree(*tree, params, path, limits);
 }
 
 }  // namespace krp

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "mrpt_krp_plugin/map/map_sanity.h"
 #include "mrpt_krp_plugin/map/occupancy_map.h"
 
 namespace octomap { class OcTree; }
@@ -18,9 +19,11 @@ struct OctomapSliceParams {
 
 /// Slices an in-memory octree: a cell is occupied if any occupied voxel of the band covers
 /// it, free if only free voxels do, unknown otherwise.
-OccupancyMap sliceOctree(const octomap::OcTree& tree, const OctomapSliceParams& params, const std::string& source);
+OccupancyMap sliceOctree(const octomap::OcTree& tree, const OctomapSliceParams& params, const std::string& source,
+                         const MapSanityLimits& limits = {});
 
 /// Reads `.bt` (binary) or `.ot` (full) OctoMap files and slices them. Throws InputError.
-OccupancyMap readOctomapSlice(const std::string& path, const OctomapSliceParams& params = {});
+OccupancyMap readOctomapSlice(const std::string& path, const OctomapSliceParams& params = {},
+                              const MapSanityLimits& limits = {});
 
 }  // namespace krp

@@ -61,8 +61,9 @@ cv::Mat readImage(const std::string& path, const std::string& yaml_path, const M
 
 }  // namespace
 
-RosMapMetadata readRosMapMetadata(const std::string& yaml_path, const MapSanityLimits& limits) {
-  const YAML::Node root = loadYamlFile(yaml_path);
+namespace {
+RosMapMetadata interpretRosMapMetadata(const YAML::Node& root, const std::string& yaml_path,
+                                       const MapSanityLimits& limits) {
   if (!root.IsMap()) throw InputError(yaml_path, "expected a YAML mapping with map_server keys");
 
   static const std::set<std::string> kKnown = {"image", "resolution", "origin", "negate",
@@ -107,6 +108,11 @@ RosMapMetadata readRosMapMetadata(const std::string& yaml_path, const MapSanityL
   m.image_path = img.is_absolute() ? img.string() : (fs::path(yaml_path).parent_path() / img).string();
   return m;
 }
+}  // namespace
+
+RosMapMetadata readRosMapMetadata(const std::string& yaml_path, const MapSanityLimits& limits) {
+  return readYamlFile(yaml_path, [&](const YAML::Node& root) { return interpretRosMapMetadata(root, yaml_path, limits); });
+}
 
 OccupancyMap readRosMap(const std::string& yaml_path, const MapSanityLimits& limits) {
   const RosMapMetadata m = readRosMapMetadata(yaml_path, limits);
@@ -129,6 +135,8 @@ OccupancyMap readRosMap(const std::string& yaml_path, const MapSanityLimits& lim
   if (grey.depth() != CV_8U) throw InputError(m.image_path, "unsupported pixel depth (expected 8 or 16 bit)");
 
   const int w = grey.cols, h = grey.rows;
+  checkGridGeometry({m.origin_x, m.origin_y, m.resolution, static_cast<double>(w), static_cast<double>(h)}, limits,
+                    yaml_path);
   auto grid = std::make_shared<mrpt::maps::COccupancyGridMap2D>();
   grid->setSize(m.origin_x, m.origin_x + w * m.resolution, m.origin_y, m.origin_y + h * m.resolution,
                 static_cast<float>(m.resolution), static_cast<float>(kUnknownOccupancy));

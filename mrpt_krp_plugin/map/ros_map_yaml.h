@@ -3,16 +3,10 @@
 
 #include <string>
 
+#include "mrpt_krp_plugin/map/map_sanity.h"
 #include "mrpt_krp_plugin/map/occupancy_map.h"
 
 namespace krp {
-
-/// Limits that turn an absurd map file into an error instead of an out-of-memory crash.
-struct MapSanityLimits {
-  double max_cells = 2.0e8;          ///< largest accepted width * height [cells]
-  double min_resolution_m = 1e-3;    ///< finest accepted cell size [m]
-  double max_resolution_m = 10.0;    ///< coarsest accepted cell size [m]
-};
 
 /// The fields of a ROS map_server YAML file, with map_server's defaults.
 struct RosMapMetadata {

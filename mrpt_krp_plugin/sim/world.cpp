@@ -41,8 +41,8 @@ LidarProfile World::lidar(const std::string& profile_name) const {
   return p;
 }
 
-World readWorld(const std::string& path) {
-  const YAML::Node root = loadYamlFile(path);
+namespace {
+World interpretWorld(const YAML::Node& root, const std::string& path) {
   if (!root.IsMap()) throw InputError(path, "expected a YAML mapping");
   rejectUnknownYamlKeys(root,
                         {"name", "map", "zones", "lidar_profiles", "default_lidar_profile", "lidar_overrides", "clutter"},
@@ -85,6 +85,11 @@ World readWorld(const std::string& path) {
     if (k.box_min_side_m > k.box_max_side_m) throw InputError(path, "clutter.box_min_side_m > clutter.box_max_side_m");
   }
   return w;
+}
+}  // namespace
+
+World readWorld(const std::string& path) {
+  return readYamlFile(path, [&](const YAML::Node& root) { return interpretWorld(root, path); });
 }
 
 void writeWorld(const World& w, const std::string& path) {

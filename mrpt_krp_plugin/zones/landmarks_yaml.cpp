@@ -27,8 +27,8 @@ void writeLandmarksYaml(const std::vector<ZoneLandmarks>& landmarks, const Landm
   writeFileAtomically(path, o.str());
 }
 
-std::vector<ZoneLandmarks> readLandmarksYaml(const std::string& path) {
-  const YAML::Node root = loadYamlFile(path);
+namespace {
+std::vector<ZoneLandmarks> interpretLandmarks(const YAML::Node& root, const std::string& path) {
   if (!root.IsMap()) throw InputError(path, "expected a mapping with 'keypoints_per_zone' and 'zones'");
   rejectUnknownYamlKeys(root, {"method", "keypoints_per_zone", "parameters", "zones"}, path);
   int k = 0;
@@ -55,6 +55,11 @@ std::vector<ZoneLandmarks> readLandmarksYaml(const std::string& path) {
     out.push_back(std::move(zl));
   }
   return out;
+}
+}  // namespace
+
+std::vector<ZoneLandmarks> readLandmarksYaml(const std::string& path) {
+  return readYamlFile(path, [&](const YAML::Node& root) { return interpretLandmarks(root, path); });
 }
 
 }  // namespace krp

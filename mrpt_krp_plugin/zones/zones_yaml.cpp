@@ -13,8 +13,8 @@
 
 namespace krp {
 
-std::vector<Zone> readZonesYaml(const std::string& path) {
-  const YAML::Node root = loadYamlFile(path);
+namespace {
+std::vector<Zone> interpretZones(const YAML::Node& root, const std::string& path) {
   if (!root.IsMap() || !root["zones"]) throw InputError(path, "expected a top-level 'zones' list");
   rejectUnknownYamlKeys(root, {"zones"}, path);
   const auto list = root["zones"];
@@ -40,6 +40,11 @@ std::vector<Zone> readZonesYaml(const std::string& path) {
   }
   if (zones.empty()) throw InputError(path, "the zone list is empty");
   return zones;
+}
+}  // namespace
+
+std::vector<Zone> readZonesYaml(const std::string& path) {
+  return readYamlFile(path, [&](const YAML::Node& root) { return interpretZones(root, path); });
 }
 
 void writeZonesYaml(const std::vector<Zone>& zones, const std::string& path) {

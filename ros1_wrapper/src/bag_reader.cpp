@@ -11,6 +11,7 @@
 
 #include <filesystem>
 
+#include "bag_framing.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 
 namespace krp::ros1 {
@@ -32,6 +33,7 @@ void loadTransforms(const rosbag::Bag& bag, tf2::BufferCore& buffer) {
 
 BagSteps readBag(const std::string& path, const BagReadParams& params) {
   if (!std::filesystem::exists(path)) throw InputError(path, "bag file does not exist");
+  checkBagFraming(path);
   rosbag::Bag bag;
   try {
     bag.open(path, rosbag::bagmode::Read);
@@ -81,6 +83,9 @@ BagSteps readBag(const std::string& path, const BagReadParams& params) {
     }
   } catch (const rosbag::BagException& e) {
     throw InputError(path, std::string("bag is truncated or corrupt: ") + e.what());
+  } catch (const ros::Exception& e) {
+    // A message shorter than its type says (found by bag_fuzzer): roscpp's StreamOverrunException.
+    throw InputError(path, std::string("a message in the bag cannot be decoded: ") + e.what());
   }
   if (out.steps.empty())
     throw InputError(path, "none of the " + std::to_string(out.scans_seen) + " scans could be used: " + out.first_problem);

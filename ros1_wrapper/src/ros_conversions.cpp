@@ -34,20 +34,18 @@ constexpr double kDefaultStdXyM = 0.5;
 constexpr double kDefaultStdYawRad = M_PI / 12;
 }  // namespace
 
-OccupancyMap occupancyMapFromRos(const nav_msgs::OccupancyGrid& msg) {
+OccupancyMap occupancyMapFromRos(const nav_msgs::OccupancyGrid& msg, const MapSanityLimits& limits) {
   const std::string what = "map '" + msg.header.frame_id + "'";
   const auto& info = msg.info;
-  if (info.width == 0 || info.height == 0) throw InputError(what, "the grid is empty (0 cells)");
-  if (!(info.resolution > 0) || !std::isfinite(info.resolution))
-    throw InputError(what, "resolution must be a finite number > 0");
   if (msg.data.size() != static_cast<size_t>(info.width) * info.height) {
     std::ostringstream s;
     s << "data has " << msg.data.size() << " cells, width x height is " << info.width * info.height;
     throw InputError(what, s.str());
   }
   const auto& o = info.origin;
-  if (!std::isfinite(o.position.x) || !std::isfinite(o.position.y))
-    throw InputError(what, "origin must be finite");
+  checkGridGeometry({o.position.x, o.position.y, info.resolution, static_cast<double>(info.width),
+                     static_cast<double>(info.height)},
+                    limits, what);
   const double yaw = pose2DFromRos(o).phi;
   if (!std::isfinite(yaw)) throw InputError(what, "origin orientation must be finite");
 

@@ -16,6 +16,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include "mrpt_krp_plugin/map/map_sanity.h"
 #include "mrpt_krp_plugin/map/occupancy_map.h"
 #include "mrpt_krp_plugin/relocalize/hypothesis_ranking.h"
 
@@ -23,8 +24,9 @@ namespace krp::ros1 {
 
 /// An OccupancyGrid as the library's map. The grid frame is the message's origin cell; a yawed
 /// origin is kept in `yaw_rad` (poses are turned back with OccupancyMap::toSourceFrame).
-/// InputError for an empty grid, a bad resolution or origin, or data of the wrong size.
-OccupancyMap occupancyMapFromRos(const nav_msgs::OccupancyGrid& msg);
+/// InputError for an empty grid, a bad resolution or origin (see MapSanityLimits), or data of the
+/// wrong size.
+OccupancyMap occupancyMapFromRos(const nav_msgs::OccupancyGrid& msg, const MapSanityLimits& limits = {});
 
 struct ScanCheck {
   int min_valid_returns = 10;  ///< fewer finite in-range returns than this: the scan is unusable

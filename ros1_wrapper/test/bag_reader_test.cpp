@@ -49,8 +49,24 @@ TEST(RosBagReader, BadBagsAreInputErrors) {
   std::filesystem::copy_file(dir + "/good.bag", dir + "/truncated.bag");
   std::filesystem::resize_file(dir + "/truncated.bag", size / 2);
   krp::test::writeText(dir + "/text.bag", "this is not a bag\n");
-  const std::pair<std::string, std::string> cases[] = {
-      {dir + "/missing.bag", "does not exist"}, {dir + "/text.bag", "not a readable"}, {dir + "/truncated.bag", ""}};
+  // Found by bag_fuzzer: rosbag reads past its buffers on lengths and positions like these.
+  std::ifstream in(dir + "/good.bag", std::ios::binary);
+  const std::string good((std::istreambuf_iterator<char>(in)), {});
+  const size_t magic = std::string("#ROSBAG V2.0\n").size();
+  std::string long_field = good;
+  const uint32_t huge = 0x7fffffff;
+  long_field.replace(magic + sizeof(uint32_t), sizeof(huge), reinterpret_cast<const char*>(&huge), sizeof(huge));
+  krp::test::writeText(dir + "/long_field.bag", long_field);
+  std::string bad_index = good;
+  const uint64_t inside_a_record = magic + 1;
+  bad_index.replace(good.find("index_pos=") + 10, sizeof(inside_a_record), reinterpret_cast<const char*>(&inside_a_record),
+                    sizeof(inside_a_record));
+  krp::test::writeText(dir + "/bad_index.bag", bad_index);
+  const std::pair<std::string, std::string> cases[] = {{dir + "/missing.bag", "does not exist"},
+                                                       {dir + "/text.bag", "not a ROS bag in format 2.0"},
+                                                       {dir + "/truncated.bag", "corrupt bag at byte"},
+                                                       {dir + "/long_field.bag", "runs past its header"},
+                                                       {dir + "/bad_index.bag", "index position is not a record"}};
   for (const auto& [path, expected] : cases) {
     try {
       readBag(path);

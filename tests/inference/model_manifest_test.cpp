@@ -94,6 +94,22 @@ TEST_F(ManifestTest, RejectsTruncatedJsonAndAMissingFolder) {
   EXPECT_THROW(readModelManifest("/nonexistent/models"), InputError);
 }
 
+// Found by model_manifest_fuzzer: a number too large for a double escaped as another exception
+// type, and a float where an integer belongs was cast with undefined behaviour.
+TEST_F(ManifestTest, RejectsHugeNumbersAndFloatsWhereIntegersBelong) {
+  const std::string folder = write(validManifest());
+  std::ofstream(fs::path(folder) / "manifest.json") << "{\"format\": 1.0e5000}";
+  EXPECT_THROW(readModelManifest(folder), InputError);
+  for (const double bad : {1.5, 1e300}) {
+    json j = validManifest();
+    j["submap"]["size_px"] = bad;
+    EXPECT_THROW(readModelManifest(write(j)), InputError) << bad;
+    j = validManifest();
+    j["classifier"]["input"]["shape"] = {1.0, 1.0, bad, 160.0};
+    EXPECT_THROW(readModelManifest(write(j)), InputError) << bad;
+  }
+}
+
 TEST_F(ManifestTest, RejectsAModelFileOutsideTheFolder) {
   json j = validManifest();
   j["classifier"]["file"] = "../elsewhere.onnx";

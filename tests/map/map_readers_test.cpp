@@ -139,7 +139,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapCase{"truncated_pgm", yaml(), "P5\n4 3\n255\n\x01\x02", "truncated"},
         BadMapCase{"not_an_image", yaml(), "hello, I am not a PGM", "not a PGM"},
         BadMapCase{"absurd_size", yaml(), "P5\n900000 900000\n255\n", "larger than the limit"},
-        BadMapCase{"no_free_cell", yaml(), kAllOccupied, "no free cell"}),
+        BadMapCase{"no_free_cell", yaml(), kAllOccupied, "no free cell"},
+        BadMapCase{"far_origin", "image: m.pgm\nresolution: 0.05\norigin: [3.0e38, 0, 0]\n", tinyPgm(), "from the origin"},
+        // Found by ros_map_fuzzer: a key looked up inside a scalar.
+        BadMapCase{"scalar_where_list", "image: m.pgm\nresolution: 0.05\norigin: 7\n", tinyPgm(), "origin"}),
     [](const auto& param_info) { return param_info.param.name; });
 
 TEST(OccupancyMap, GridAndSourceFramesAreInverse) {
@@ -163,8 +166,14 @@ TEST(MrptGridmap, RoundTripsPlainAndGzip) {
   for (const std::string name : {"room.gridmap", "room.gridmap.gz"}) {
     writeMrptGridmap(room, dir + "/" + name);
     const auto back = loadOccupancyMap(dir + "/" + name);
-    EXPECT_EQ(back.grid->getSizeX(), room.getSizeX()) << name;
-    EXPECT_EQ(countFreeCells(*back.grid), countFreeCells(room)) << name;
+    ASSERT_EQ(back.grid->getSizeX(), room.getSizeX()) << name;
+    ASSERT_EQ(back.grid->getSizeY(), room.getSizeY()) << name;
+    EXPECT_FLOAT_EQ(back.grid->getXMin(), room.getXMin()) << name;
+    EXPECT_FLOAT_EQ(back.grid->getYMax(), room.getYMax()) << name;
+    EXPECT_FLOAT_EQ(back.grid->getResolution(), room.getResolution()) << name;
+    for (unsigned y = 0; y < room.getSizeY(); ++y)
+      for (unsigned x = 0; x < room.getSizeX(); ++x)
+        ASSERT_EQ(back.grid->getCell(x, y), room.getCell(x, y)) << name << " cell " << x << "," << y;
   }
 }
 
@@ -180,6 +189,28 @@ TEST(MrptGridmap, RejectsGarbageEmptyAndTruncatedFiles) {
   std::string bytes((std::istreambuf_iterator<char>(in)), {});
   writeText(dir + "/cut.gridmap", bytes.substr(0, bytes.size() / 2));
   EXPECT_THROW(loadOccupancyMap(dir + "/cut.gridmap"), InputError);
+}
+
+// Found by binary_map_fuzzer: MRPT allocates the cells the header announces before reading them.
+TEST(MrptGridmap, RefusesAHeaderThatAnnouncesMoreCellsThanTheFileHolds) {
+  const auto dir = tempDir("gridmap_header");
+  writeMrptGridmap(test::asymmetricRoom(), dir + "/full.gridmap");
+  std::ifstream in(dir + "/full.gridmap", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  // size_x sits after the class header (1 + 31 bytes), the version and the bits per cell.
+  const size_t size_x_at = 1 + 31 + 1 + 1;
+  const uint32_t huge = 60000;
+  bytes.replace(size_x_at, sizeof(huge), reinterpret_cast<const char*>(&huge), sizeof(huge));
+  writeText(dir + "/huge.gridmap", bytes);
+  try {
+    loadOccupancyMap(dir + "/huge.gridmap");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the header announces 60000 x"), std::string::npos) << e.what();
+  }
+  MapLoadParams small;
+  small.limits.max_cells = 100;
+  EXPECT_THROW(loadOccupancyMap(dir + "/full.gridmap", small), InputError);
 }
 
 // A 6 x 4 m room in 3D: walls 0..2 m high, free air inside from 0 to 2 m.

@@ -125,6 +125,15 @@ TEST(World, ReadsTheShippedWorldsAndRejectsBadKeys) {
   EXPECT_THROW(readWorld(dir + "/w.world.yaml"), InputError);
   test::writeText(dir + "/p.world.yaml", "name: w\nmap: m.yaml\nzones: z.yaml\nlidar_profiles: [sonar]\n");
   EXPECT_THROW(readWorld(dir + "/p.world.yaml"), InputError);
+  // Found by zones_world_fuzzer: a section given as a scalar let yaml-cpp's exception out.
+  test::writeText(dir + "/s.world.yaml",
+                  "name: w\nmap: m.yaml\nzones: z.yaml\nlidar_profiles: [omni_12m]\nclutter: 3\n");
+  try {
+    readWorld(dir + "/s.world.yaml");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.world.yaml"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
