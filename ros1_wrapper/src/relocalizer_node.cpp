@@ -64,6 +64,7 @@ RelocalizerNode::RelocalizerNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   global_localization_srv_ =
       nh_.advertiseService("global_localization", &RelocalizerNode::onGlobalLocalization, this);
   relocalize_srv_ = pnh_.advertiseService("relocalize", &RelocalizerNode::onRelocalize, this);
+  reload_srv_ = pnh_.advertiseService("reload", &RelocalizerNode::onReload, this);
   report("started: mode " + params_.mode + ", backend " + params_.backend +
              (params_.map_file.empty() ? ", waiting for `map`" : ", map " + params_.map_file),
          false);
@@ -76,6 +77,7 @@ RelocalizerNode::~RelocalizerNode() {
   initialpose_sub_.shutdown();
   global_localization_srv_.shutdown();
   relocalize_srv_.shutdown();
+  reload_srv_.shutdown();
   // The workers call back into this object: stop them before anything else goes.
   track_worker_.reset();
   std::shared_ptr<MapState> state;
@@ -325,6 +327,25 @@ bool RelocalizerNode::onGlobalLocalization(std_srvs::Empty::Request&, std_srvs::
   report(why.empty() ? "global_localization: relocalizing from the newest scan"
                      : "global_localization: " + why + "; will relocalize from the next scan",
          false);
+  return true;
+}
+
+bool RelocalizerNode::onReload(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+  const auto state = mapState();
+  if (!state) {
+    res.success = false;
+    res.message = "not reloaded: no map yet";
+  } else {
+    try {
+      useMap(*state->map);
+      res.success = true;
+      res.message = "reloaded: backend " + params_.backend;
+    } catch (const std::exception& e) {
+      res.success = false;
+      res.message = std::string("not reloaded, keeping the loaded backend: ") + e.what();
+    }
+  }
+  report(res.message, !res.success);
   return true;
 }
 

@@ -67,6 +67,9 @@ class RelocalizerNode {
   void onInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg);
   bool onGlobalLocalization(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   bool onRelocalize(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res);
+  /// Re-reads the models (a file replaced on disk is not used until then) on the map in use; if
+  /// they do not load, keeps the loaded ones and says why.
+  bool onReload(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res);
 
   /// Relocalizes from the newest scan; empty if there is no map or no recent scan (reason given).
   std::optional<std::shared_future<RelocalizationReply>> relocalizeLatest(std::string* why_not);
@@ -86,7 +89,7 @@ class RelocalizerNode {
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   ros::Publisher initialpose_pub_, hypotheses_pub_, markers_pub_, status_pub_, amcl_pose_pub_, cloud_pub_;
   ros::Subscriber map_sub_, scan_sub_, amcl_pose_sub_, initialpose_sub_;
-  ros::ServiceServer global_localization_srv_, relocalize_srv_;
+  ros::ServiceServer global_localization_srv_, relocalize_srv_, reload_srv_;
 
   std::mutex mutex_;  ///< guards everything below
   std::shared_ptr<MapState> map_state_;

@@ -20,6 +20,9 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <mutex>
 #include <optional>
 
@@ -34,6 +37,8 @@ namespace {
 constexpr double kMaxErrorM = 0.3;
 constexpr double kMaxErrorDeg = 5.0;
 constexpr double kScanPeriodS = 0.1;
+// Longer than the node's default max_scan_age_s (1 s), so that the last scan it could use is stale.
+constexpr double kTransformGapS = 2.0;
 const char* kWorld = KRP_SOURCE_DIR "/sim_worlds/office_two_zone/office_two_zone.world.yaml";
 
 nav_msgs::OccupancyGrid toRos(const mrpt::maps::COccupancyGridMap2D& g) {
@@ -76,6 +81,11 @@ class Robot {
     const ros::Time stamp = ros::Time::now();
     broadcaster_.sendTransform(transformToRos(odom, "odom", "base_link", stamp));
     scan_pub_.publish(scanToRos(scan, stamp, frame));
+  }
+
+  /// One scan stamped now, without its odom -> base_link transform.
+  void publishScanOnly(const mrpt::obs::CObservation2DRangeScan& scan) {
+    scan_pub_.publish(scanToRos(scan, ros::Time::now(), "laser"));
   }
 
   /// Publishes the same scan every kScanPeriodS until `done` or the timeout; true if done.
@@ -205,6 +215,39 @@ TEST(RosNodeRelocalize, BadScansAndMissingTransformsAreReportedAndTheNodeGoesOn)
   EXPECT_TRUE(trigger.response.success) << trigger.response.message;
 }
 
+// The odom -> base_link transform stops (an odometry driver restarting) while scans keep coming,
+// then comes back: meanwhile the node ignores the scans, says why, and refuses to relocalize from
+// the stale last good one; afterwards it relocalizes again.
+TEST(RosNodeRelocalize, TransformsGoingMissingAndComingBack) {
+  Kidnaps k;
+  Robot robot;
+  ASSERT_TRUE(waitForService("krp_relocalizer/relocalize"));
+  const mrpt::math::TPose2D odom(0, 0, 0);
+  robot.publishUntil(*k.first.scans[0], odom, 0.5, [] { return false; });
+  std_srvs::Trigger trigger;
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/relocalize", trigger));
+  EXPECT_TRUE(trigger.response.success) << "before the gap: " << trigger.response.message;
+
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(kTransformGapS);
+  while (ros::WallTime::now() < end) {
+    robot.publishScanOnly(*k.first.scans[0]);
+    ros::WallDuration(kScanPeriodS).sleep();
+  }
+  EXPECT_TRUE(robot.statusContains("no transform")) << robot.statuses();
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/relocalize", trigger));
+  EXPECT_FALSE(trigger.response.success) << "relocalized from a stale scan: " << trigger.response.message;
+  EXPECT_NE(trigger.response.message.find("old"), std::string::npos) << trigger.response.message;
+
+  robot.publishUntil(*k.first.scans[0], odom, 0.5, [] { return false; });
+  robot.clearPose();
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/relocalize", trigger));
+  EXPECT_TRUE(trigger.response.success) << "after the gap: " << trigger.response.message;
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(5.0);
+  while (!robot.lastPose() && ros::WallTime::now() < deadline) ros::WallDuration(kScanPeriodS).sleep();
+  ASSERT_TRUE(robot.lastPose().has_value()) << "no initialpose after the gap";
+  expectNear(pose2DFromRos(robot.lastPose()->pose.pose), k.first.truth[0], "relocalized after the gap");
+}
+
 // Beside AMCL with relocalize_on_kidnap: AMCL (played by the test) keeps reporting the old pose
 // while the robot has been carried off; the scans stop fitting there and the node relocalizes.
 TEST(RosNodeRelocalize, KidnapBesideAmclIsDetectedAndRelocalized) {
@@ -259,6 +302,46 @@ TEST(RosNodeLearned, AnswersWithThePipelinesVerdict) {
     EXPECT_NE(m.find("not localized: "), std::string::npos) << m;
   }
   EXPECT_TRUE(robot.statusContains("backend learned")) << robot.statuses();
+}
+
+// A model file replaced on disk while the node runs (a half-copied update): the node keeps the
+// models it loaded; `~reload` refuses the broken file and keeps them too, and takes the file once
+// it is good again. The node runs on a copy of the shipped models in KRP_TEST_MODELS_DIR.
+TEST(RosNodeLearned, ReplacedModelFileIsTakenOnlyOnReloadAndOnlyIfItLoads) {
+  const char* dir = std::getenv("KRP_TEST_MODELS_DIR");
+  ASSERT_NE(dir, nullptr) << "KRP_TEST_MODELS_DIR is not set";
+  const std::string copy = std::string(dir) + "/keypoints.onnx";
+  const std::string original = std::string(KRP_SOURCE_DIR) + "/models/office_two_zone/keypoints.onnx";
+  Kidnaps k;
+  Robot robot;
+  ASSERT_TRUE(waitForService("krp_relocalizer/reload"));
+  const mrpt::math::TPose2D odom(0, 0, 0);
+  auto relocalize = [&] {
+    robot.publishUntil(*k.first.scans[0], odom, 0.5, [] { return false; });
+    std_srvs::Trigger t;
+    EXPECT_TRUE(ros::service::call("krp_relocalizer/relocalize", t));
+    return t.response;
+  };
+  const auto before = relocalize();
+  std::ofstream(copy, std::ios::trunc) << "half a model";
+
+  const auto while_broken = relocalize();
+  EXPECT_EQ(while_broken.success, before.success) << while_broken.message;
+  EXPECT_EQ(while_broken.message.find("failed"), std::string::npos) << while_broken.message;
+  std_srvs::Trigger reload;
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/reload", reload));
+  EXPECT_FALSE(reload.response.success);
+  EXPECT_NE(reload.response.message.find("not reloaded, keeping the loaded backend"), std::string::npos)
+      << reload.response.message;
+  EXPECT_NE(reload.response.message.find("keypoints.onnx"), std::string::npos) << reload.response.message;
+  const auto after_refused = relocalize();
+  EXPECT_EQ(after_refused.success, before.success) << after_refused.message;
+  EXPECT_EQ(after_refused.message.find("failed"), std::string::npos) << after_refused.message;
+
+  std::filesystem::copy_file(original, copy, std::filesystem::copy_options::overwrite_existing);
+  ASSERT_TRUE(ros::service::call("krp_relocalizer/reload", reload));
+  EXPECT_TRUE(reload.response.success) << reload.response.message;
+  EXPECT_EQ(relocalize().success, before.success);
 }
 
 // The map comes on a topic and is re-published mid-run: a good one is re-read, a broken one is
