@@ -26,6 +26,7 @@ struct MethodSummary {
   /// Methods that relocalize from the first scan (seeded, global-matcher): its answer; negative for others.
   double seed_localized_rate = -1.0;    ///< it called itself localized / trials
   double seed_best_right_rate = -1.0;   ///< its best hypothesis was within max_error_xy_m of the truth / trials
+  double seed_localized_wrong_rate = -1.0;  ///< it called itself localized and its best was not right / trials
 };
 
 std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, double right_within_m = 0.5);

@@ -118,8 +118,28 @@ BuiltWorld buildLargeFloor(uint64_t seed) {
   return out;
 }
 
+namespace {
+// A plain walled rectangle of w x h metres and nothing else, zoned into west and east halves.
+BuiltWorld emptyBuilding(const std::string& name, double w, double h) {
+  FloorPlan plan(w + 2 * kMargin, h + 2 * kMargin, kWorldResolutionM);
+  plan.building(kMargin, kMargin, kMargin + w, kMargin + h);
+  BuiltWorld out{name, plan.toGrid(), {}};
+  const double W = w + 2 * kMargin, H = h + 2 * kMargin;
+  out.zones.push_back(rectangleZone("west_half", 0.0, 0.0, W / 2, H, kWorldResolutionM));
+  out.zones.push_back(rectangleZone("east_half", W / 2, 0.0, W, H, kWorldResolutionM));
+  return out;
+}
+}  // namespace
+
+// Away from the closed ends a scan sees two parallel lines that fit anywhere along the corridor.
+BuiltWorld buildCorridor(uint64_t /*seed*/) { return emptyBuilding("corridor", 60.0, 2.4); }
+
+// Every pose has a twin turned by 180 degrees, and from the middle a 12 m lidar sees no wall.
+BuiltWorld buildEmptyHall(uint64_t /*seed*/) { return emptyBuilding("empty_hall", 40.0, 30.0); }
+
 const std::vector<std::string>& worldNames() {
-  static const std::vector<std::string> names = {"office_two_zone", "warehouse", "large_floor"};
+  static const std::vector<std::string> names = {"office_two_zone", "warehouse", "large_floor", "corridor",
+                                                 "empty_hall"};
   return names;
 }
 
@@ -127,7 +147,9 @@ BuiltWorld buildWorld(const std::string& name, uint64_t seed) {
   if (name == "office_two_zone") return buildOfficeTwoZone(seed);
   if (name == "warehouse") return buildWarehouse(seed);
   if (name == "large_floor") return buildLargeFloor(seed);
-  throw InputError("world '" + name + "'", "unknown (known: office_two_zone, warehouse, large_floor)");
+  if (name == "corridor") return buildCorridor(seed);
+  if (name == "empty_hall") return buildEmptyHall(seed);
+  throw InputError("world '" + name + "'", "unknown (known: office_two_zone, warehouse, large_floor, corridor, empty_hall)");
 }
 
 }  // namespace krp

@@ -31,6 +31,11 @@ BuiltWorld buildWarehouse(uint64_t seed);
 /// A multi-room floor (> 3000 m^2 free) with corridors, zoned automatically (>= 12 zones).
 BuiltWorld buildLargeFloor(uint64_t seed);
 
+/// Degenerate scenes for the robustness bench (scripts/bench_degenerate.sh): a 60 x 2.4 m
+/// featureless corridor and a 40 x 30 m empty hall, two zones each. The seed is unused.
+BuiltWorld buildCorridor(uint64_t seed);
+BuiltWorld buildEmptyHall(uint64_t seed);
+
 /// The names accepted by `buildWorld`.
 const std::vector<std::string>& worldNames();
 BuiltWorld buildWorld(const std::string& name, uint64_t seed);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "mrpt_krp_plugin/bench/bench_report.h"
 #include "mrpt_krp_plugin/bench/trial_metrics.h"
 
 namespace krp {
@@ -75,4 +76,23 @@ TEST(TrialMetrics, Median) {
 }
 
 }  // namespace
+// The relocalizer's own confident-but-wrong rate counts only trials where it said "localized".
+TEST(BenchSummary, RelocalizerRatesSeparateVerdictFromCorrectness) {
+  auto record = [](bool localized, double best_error_m) {
+    TrialRecord r;
+    r.world = "w";
+    r.lidar = "l";
+    r.method = "global-matcher";
+    r.seed_hypotheses = 2;
+    r.seed_localized = localized;
+    r.seed_best_error_xy_m = best_error_m;
+    return r;
+  };
+  const auto s = summarize({record(true, 0.1), record(true, 3.0), record(false, 5.0), record(false, 0.2)}, 0.5);
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_DOUBLE_EQ(s[0].seed_localized_rate, 0.5);
+  EXPECT_DOUBLE_EQ(s[0].seed_best_right_rate, 0.5);
+  EXPECT_DOUBLE_EQ(s[0].seed_localized_wrong_rate, 0.25);
+}
+
 }  // namespace krp

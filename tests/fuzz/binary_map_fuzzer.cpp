@@ -5,18 +5,9 @@
 #include <string>
 
 #include "fuzz_file.h"
+#include "fuzz_map_limits.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
-
-namespace {
-// Maps up to the default limit (2e8 cells) are valid but take seconds each; a smaller limit keeps
-// every run fast while the limit checks themselves stay under test.
-krp::MapLoadParams fuzzLimits() {
-  krp::MapLoadParams p;
-  p.limits.max_cells = 1e6;
-  return p;
-}
-}  // namespace
 
 namespace {
 const std::array<std::string, 4> kNames = {"map.gridmap", "map.gridmap.gz", "map.bt", "map.ot"};
@@ -26,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
   const auto& name = kNames[data[0] % kNames.size()];
   try {
-    krp::loadOccupancyMap(krp::fuzz::scratch().write(name, krp::fuzz::asText(data + 1, size - 1)), fuzzLimits());
+    const auto file = krp::fuzz::scratch().write(name, krp::fuzz::asText(data + 1, size - 1));
+    krp::loadOccupancyMap(file, krp::fuzz::fuzzMapLimits());
   } catch (const krp::InputError&) {
   }
   return 0;

@@ -5,18 +5,9 @@
 #include <string>
 
 #include "fuzz_file.h"
+#include "fuzz_map_limits.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
-
-namespace {
-// Maps up to the default limit (2e8 cells) are valid but take seconds each; a smaller limit keeps
-// every run fast while the limit checks themselves stay under test.
-krp::MapLoadParams fuzzLimits() {
-  krp::MapLoadParams p;
-  p.limits.max_cells = 1e6;
-  return p;
-}
-}  // namespace
 
 namespace {
 constexpr std::string_view kImageMarker = "\n%%IMAGE%%\n";
@@ -33,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   folder.write("map.pgm", image);
   folder.write("map.png", image);
   try {
-    krp::loadOccupancyMap(folder.write("map.yaml", yaml), fuzzLimits());
+    krp::loadOccupancyMap(folder.write("map.yaml", yaml), krp::fuzz::fuzzMapLimits());
   } catch (const krp::InputError&) {
   }
   return 0;

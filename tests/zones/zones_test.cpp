@@ -113,6 +113,16 @@ TEST(AutoZoning, LargeFloorGetsAtLeastTwelveValidZones) {
   EXPECT_GE(freeAreaM2(world.map), 3000.0);
 }
 
+// The degenerate scenes of scripts/bench_degenerate.sh are what they claim: plain, valid worlds.
+TEST(WorldBuilders, DegenerateScenesHaveValidZonesAndTheirSize) {
+  const auto corridor = buildWorld("corridor", 1);
+  EXPECT_TRUE(findZoneProblems(corridor.map, corridor.zones).empty());
+  EXPECT_NEAR(freeAreaM2(corridor.map), 60.0 * 2.4, 15.0);
+  const auto hall = buildWorld("empty_hall", 1);
+  EXPECT_TRUE(findZoneProblems(hall.map, hall.zones).empty());
+  EXPECT_NEAR(freeAreaM2(hall.map), 40.0 * 30.0, 30.0);
+}
+
 TEST(ZoneDrawing, WritesAPngOfTheMapSize) {
   const auto dir = test::tempDir("zones_png");
   const auto world = buildOfficeTwoZone(1);
