@@ -95,6 +95,8 @@ ModelManifest readModelManifest(const std::string& folder) {
   m.lidar_name = field<std::string>(root, "lidar.name", file);
   m.lidar_fov_deg = field<double>(root, "lidar.fov_deg", file);
   m.lidar_max_range_m = field<double>(root, "lidar.max_range_m", file);
+  if (root.contains("map") && root["map"].is_object() && root["map"].contains("resolution_m"))
+    m.map_resolution_m = field<double>(root, "map.resolution_m", file);
   m.submap_size_m = field<double>(root, "submap.size_m", file);
   m.submap_size_px = field<int>(root, "submap.size_px", file);
   m.sdt_clip_m = field<double>(root, "sdt_clip_m", file);

@@ -33,6 +33,7 @@ struct ModelManifest {
   std::string lidar_name;
   double lidar_fov_deg = 0;
   double lidar_max_range_m = 0;
+  double map_resolution_m = 0;  ///< cell size of the map trained on; 0 when not recorded (non-YAML maps)
   double submap_size_m = 0;
   int submap_size_px = 0;
   double sdt_clip_m = 0;

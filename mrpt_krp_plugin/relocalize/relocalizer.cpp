@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numeric>
+#include <sstream>
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/submap/occupancy_image.h"
@@ -26,6 +28,16 @@ void requireLandmarksInsideMap(const ModelManifest& m, const mrpt::maps::COccupa
                          "another map (world '" + m.world + "')");
 }
 
+void requireTrainingMapResolution(const ModelManifest& m, const mrpt::maps::COccupancyGridMap2D& map,
+                                  double tolerance_m) {
+  if (m.map_resolution_m > 0 && std::abs(map.getResolution() - m.map_resolution_m) > tolerance_m) {
+    std::ostringstream s;
+    s << "the models were trained on a map of " << m.map_resolution_m << " m cells (world '" << m.world
+      << "'); this map has " << map.getResolution() << " m cells";
+    throw InputError(m.folder + "/manifest.json", s.str());
+  }
+}
+
 /// The `count` zone indices with the highest probability.
 std::vector<int> topZones(const std::vector<float>& probs, int count) {
   std::vector<int> idx(probs.size());
@@ -44,10 +56,28 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
       classifier_(manifest_, params.onnx),
       detector_(manifest_, params.onnx),
       verifier_(map, params.verifier) {
+  requireTrainingMapResolution(manifest_, map, params.map_resolution_tolerance_m);
   requireLandmarksInsideMap(manifest_, map);
 }
 
+void Relocalizer::requireTrainingLidar(const mrpt::obs::CObservation2DRangeScan& scan) const {
+  // MRPT's aperture of a 360 deg scanner leaves out one beam spacing; compare the full coverage.
+  const double n = static_cast<double>(scan.getScanSize());
+  const double fov_deg = n > 1 ? scan.aperture * n / (n - 1) * 180.0 / M_PI : 0.0;
+  const double range_m = scan.maxRange;
+  const bool fov_ok = std::abs(fov_deg - manifest_.lidar_fov_deg) <= params_.lidar_fov_tolerance_deg;
+  const bool range_ok =
+      std::abs(range_m - manifest_.lidar_max_range_m) <= params_.lidar_range_tolerance * manifest_.lidar_max_range_m;
+  if (fov_ok && range_ok) return;
+  std::ostringstream s;
+  s << "the models were trained for lidar '" << manifest_.lidar_name << "' (" << manifest_.lidar_fov_deg << " deg, "
+    << manifest_.lidar_max_range_m << " m); this scan covers " << fov_deg << " deg to " << range_m
+    << " m: train models for this lidar (krp-train-map --lidar)";
+  throw InputError("scan", s.str());
+}
+
 RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRangeScan& scan) const {
+  requireTrainingLidar(scan);
   RelocalizationResult r;
   const auto start = Clock::now();
   auto t = start;

@@ -28,6 +28,13 @@ struct RelocalizerParams {
   KeypointHypothesesParams keypoints;
   PoseVerifierParams verifier;
   OnnxRuntimeParams onnx;
+  /// A scan whose field of view differs from the manifest's lidar by more than this is refused:
+  /// the models never saw such submaps [deg].
+  double lidar_fov_tolerance_deg = 10.0;
+  /// The same for the maximum range, as a fraction of the manifest's.
+  double lidar_range_tolerance = 0.25;
+  /// The map's cell size may differ from the one trained on by this much [m] (float rounding).
+  double map_resolution_tolerance_m = 1e-4;
 };
 
 /// Wall-clock time of each stage of one relocalization [ms].
@@ -48,15 +55,20 @@ struct RelocalizationResult {
 class Relocalizer {
  public:
   /// Loads `<models_dir>/manifest.json` and both models. InputError when the models or the
-  /// manifest cannot be used, or when the manifest's landmarks lie outside `map`.
+  /// manifest cannot be used, or do not fit `map`: another cell size than the map trained on, or
+  /// landmarks outside it.
   Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map, RelocalizerParams params = {});
 
+  /// InputError("scan", ...) for a scan from a lidar the models were not trained for (field of
+  /// view or range outside the tolerances of RelocalizerParams).
   RelocalizationResult relocalize(const mrpt::obs::CObservation2DRangeScan& scan) const;
 
   const ModelManifest& manifest() const { return manifest_; }
   const PoseVerifier& verifier() const { return verifier_; }
 
  private:
+  void requireTrainingLidar(const mrpt::obs::CObservation2DRangeScan& scan) const;
+
   RelocalizerParams params_;
   ModelManifest manifest_;
   ZoneClassifier classifier_;
