@@ -5,6 +5,7 @@
 
 #include "cli_args.h"
 #include "mrpt_krp_plugin/bench/bench_report.h"
+#include "mrpt_krp_plugin/bench/kidnap_report.h"
 #include "mrpt_krp_plugin/bench/bench_runner.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 
@@ -27,6 +28,9 @@ static int run(int argc, char** argv) {
                 {"methods", "A,B", "methods to compare", "uniform-mcl,amcl-kld"},
                 {"trials", "N", "trials per world and lidar", "10"},
                 {"steps", "N", "motion steps per trial after the first scan", "40"},
+                {"kidnap-at", "STEP", "carry the robot elsewhere at this step (1..steps) and run every method with "
+                 "kidnap detection; the report adds a kidnap table (0 = no kidnap)", "0"},
+                {"kidnap-min-distance", "M", "--kidnap-at: the robot is carried at least this far", "5"},
                 {"seed", "N", "base seed (printed; every trial seed derives from it)", "1"},
                 {"out", "DIR", "report folder", "out/bench"},
                 {"uniform-particles", "N", "uniform-mcl: fixed particle count (0 = by density)", "0"},
@@ -40,7 +44,7 @@ static int run(int argc, char** argv) {
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"tol-xy", "M", "convergence tolerance, position", "0.5"},
                 {"tol-deg", "DEG", "convergence tolerance, heading", "10"},
-                {"save-rawlogs", "", "also write each trial as an MRPT rawlog + ground truth under OUT/rawlogs", ""}});
+                {"save-rawlogs", "", "also write each trial as an MRPT rawlog, a CARMEN log and its ground truth under OUT/rawlogs", ""}});
   if (!args.parse(argc, argv)) return 0;
   krp::BenchConfig cfg;
   for (const auto& w : args.list("worlds")) cfg.world_files.push_back(krp::apps::worldFilePath(w, args.get("world-dir")));
@@ -49,6 +53,10 @@ static int run(int argc, char** argv) {
   cfg.trials = static_cast<int>(args.integer("trials"));
   cfg.trial.steps = static_cast<int>(args.integer("steps"));
   if (cfg.trials < 1 || cfg.trial.steps < 0) throw krp::InputError("--trials/--steps", "must be >= 1 / >= 0");
+  cfg.kidnap_at_step = static_cast<int>(args.integer("kidnap-at"));
+  cfg.kidnap_min_distance_m = args.number("kidnap-min-distance");
+  if (cfg.kidnap_at_step < 0 || cfg.kidnap_at_step > cfg.trial.steps)
+    throw krp::InputError("--kidnap-at", "must be in 0.." + std::to_string(cfg.trial.steps) + " (the trial's steps)");
   cfg.seed = static_cast<uint64_t>(args.integer("seed"));
   cfg.method_settings.uniform.particles = static_cast<size_t>(args.integer("uniform-particles"));
   cfg.method_settings.uniform.particles_per_m2 = args.number("uniform-particles-per-m2");
@@ -66,7 +74,8 @@ static int run(int argc, char** argv) {
 
   const auto records = krp::runBench(cfg, std::cerr);
   krp::writeBenchReport(records, cfg, args.commandLine(), out);
-  std::cout << "\n" << krp::summaryTable(krp::summarize(records, cfg.criteria.max_error_xy_m)) << "\nReport: " << (fs::path(out) / "REPORT.md").string()
+  std::cout << "\n" << krp::summaryTable(krp::summarize(records, cfg.criteria.max_error_xy_m)) << "\n"
+            << krp::kidnapSection(krp::summarizeKidnaps(records), cfg.kidnap_at_step) << "Report: " << (fs::path(out) / "REPORT.md").string()
             << " (trials.csv, updates.csv, summary.json, plots beside it)\n";
   return 0;
 }

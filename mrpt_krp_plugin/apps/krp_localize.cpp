@@ -2,6 +2,7 @@
 // krp-localize: runs the particle filter over a rawlog, pf-localization style (INI + flags).
 #include <mrpt/config/CConfigFile.h>
 
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -9,9 +10,12 @@
 
 #include "cli_args.h"
 #include "mrpt_krp_plugin/bench/method_registry.h"
+#include "mrpt_krp_plugin/bench/reliability.h"
+#include "mrpt_krp_plugin/bench/single_scan_sweep.h"
 #include "mrpt_krp_plugin/bench/trial_metrics.h"
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/logs/carmen_log.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/relocalize/relocalization_output.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
@@ -26,9 +30,10 @@ namespace {
 constexpr char kSection[] = "localize";
 
 // The INI's [localize] keys; each may also be given as a flag of the same name with '-'.
-const std::set<std::string> kIniKeys = {"map", "rawlog", "bag", "scan_topic", "odom_frame", "base_frame", "method", "ground_truth", "out_dir", "seed",
+const std::set<std::string> kIniKeys = {"map", "rawlog", "bag", "carmen", "carmen_fov_deg", "truth_from_log", "scan_topic",
+                                        "odom_frame", "base_frame", "method", "ground_truth", "out_dir", "seed",
                                         "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min",
-                                        "models", "single_scan", "top_zones", "seeded_uniform_fraction"};
+                                        "models", "single_scan", "single_scan_stride", "top_zones", "seeded_uniform_fraction"};
 
 std::string flagName(std::string key) {
   for (auto& c : key) if (c == '_') c = '-';
@@ -54,7 +59,7 @@ std::map<std::string, std::string> mergeSettings(const CliArgs& args) {
     if (!args.has(flagName(k))) s[k] = cfg.read_string(kSection, k, "");
   }
   // Relative paths in the INI are relative to the INI's folder.
-  for (const char* k : {"map", "rawlog", "bag", "ground_truth", "out_dir", "models"})
+  for (const char* k : {"map", "rawlog", "bag", "carmen", "ground_truth", "out_dir", "models"})
     if (!args.has(flagName(k)) && !s[k].empty() && fs::path(s[k]).is_relative() && keys.end() != std::find(keys.begin(), keys.end(), k))
       s[k] = (fs::path(ini).parent_path() / s[k]).string();
   return s;
@@ -70,17 +75,36 @@ double toNumber(const std::map<std::string, std::string>& s, const std::string& 
   throw krp::InputError(key, "'" + s.at(key) + "' is not a number");
 }
 
-// --single-scan: the relocalizer's answer for one scan, as text, JSON and a picture.
-int relocalizeOneScan(const krp::Relocalizer& relocalizer, const mrpt::maps::COccupancyGridMap2D& map,
+// What --single-scan relocalizes with: the learned models, or the global matcher when the
+// method is `global-matcher`.
+struct SingleScanBackend {
+  std::shared_ptr<const krp::Relocalizer> learned;
+  std::shared_ptr<const krp::MatcherRelocalizer> matcher;
+
+  krp::RelocalizationResult relocalize(const mrpt::obs::CObservation2DRangeScan& scan) const {
+    if (learned) return learned->relocalize(scan);
+    krp::RelocalizationResult r;
+    const auto start = std::chrono::steady_clock::now();
+    r.ranking = matcher->relocalize(scan);
+    r.times.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return r;
+  }
+  std::vector<std::string> zones() const { return learned ? learned->manifest().zones : std::vector<std::string>{}; }
+  krp::HypothesisSource source() const {
+    return [this](const mrpt::obs::CObservation2DRangeScan& scan) { return relocalize(scan).ranking; };
+  }
+};
+
+// --single-scan STEP: the relocalizer's answer for one scan, as text, JSON and a picture.
+int relocalizeOneScan(const SingleScanBackend& backend, const mrpt::maps::COccupancyGridMap2D& map,
                       const std::vector<krp::RawlogStep>& steps, const std::vector<mrpt::math::TPose2D>& truth,
                       long index, const std::string& out_dir) {
   if (index >= static_cast<long>(steps.size()))
-    throw krp::InputError("--single-scan", std::to_string(index) + " is past the rawlog's " + std::to_string(steps.size()) + " steps");
+    throw krp::InputError("--single-scan", std::to_string(index) + " is past the log's " + std::to_string(steps.size()) + " steps");
   const auto scan = steps[index].observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
-  if (!scan) throw krp::InputError("rawlog step " + std::to_string(index), "holds no 2D range scan");
-  const auto result = relocalizer.relocalize(*scan);
-  const auto& zones = relocalizer.manifest().zones;
-  auto j = krp::relocalizationJson(result, zones);
+  if (!scan) throw krp::InputError("step " + std::to_string(index), "holds no 2D range scan");
+  const auto result = backend.relocalize(*scan);
+  auto j = krp::relocalizationJson(result, backend.zones());
   std::optional<mrpt::math::TPose2D> t;
   if (!truth.empty()) {
     t = truth[index];
@@ -89,15 +113,54 @@ int relocalizeOneScan(const krp::Relocalizer& relocalizer, const mrpt::maps::COc
   const fs::path out(out_dir);
   krp::writeFileAtomically((out / "hypotheses.json").string(), j.dump(2) + "\n");
   krp::writeHypothesesPng(map, result, t, (out / "hypotheses.png").string());
-  std::cout << krp::relocalizationText(result, zones);
+  std::cout << krp::relocalizationText(result, backend.zones());
   if (t) std::cout << "truth: x " << t->x << " m, y " << t->y << " m, yaw " << t->phi * 180.0 / M_PI << " deg\n";
   std::cout << "written: " << (out / "hypotheses.json").string() << ", " << (out / "hypotheses.png").string() << "\n";
   return 0;
 }
+
+// --single-scan all: every stride-th scan relocalized on its own, counted against the truth.
+int relocalizeEveryScan(const SingleScanBackend& backend, const mrpt::maps::COccupancyGridMap2D& map,
+                        const std::vector<krp::RawlogStep>& steps, const std::vector<mrpt::math::TPose2D>& truth,
+                        std::size_t stride, const std::string& header, const std::string& out_dir) {
+  const auto records = krp::sweepSingleScans(backend.source(), steps, truth, stride, krp::ConvergenceCriteria{}, &std::cout);
+  const fs::path out(out_dir);
+  krp::writeFileAtomically((out / "single_scan.csv").string(), krp::sweepCsv(records));
+  krp::writeSweepPng(map, records, truth, (out / "single_scan.png").string());
+  const krp::ConvergenceCriteria right;
+  std::ostringstream sum;
+  sum << header << "mode: single scan, every " << stride << " scan(s), no filter\n"
+      << "right means: best hypothesis within " << right.max_error_xy_m << " m and " << right.max_error_phi_deg
+      << " deg of the truth\n"
+      << krp::sweepSummaryText(krp::summarizeSweep(records));
+  if (!truth.empty()) {
+    std::vector<krp::ConfidenceOutcome> answers;
+    for (const auto& r : records)
+      if (r.best) answers.push_back({r.confidence, r.best_right});
+    sum << "confidence against outcome (best hypothesis):\n" << krp::reliabilityMarkdown(krp::reliabilityTable(answers));
+  }
+  krp::writeFileAtomically((out / "krp_localize_SUMMARY.txt").string(), sum.str());
+  std::cout << sum.str() << "written: " << (out / "single_scan.csv").string() << ", " << (out / "single_scan.png").string()
+            << ", " << (out / "krp_localize_SUMMARY.txt").string() << "\n";
+  return 0;
+}
 }  // namespace
 
-// The steps from --rawlog, or from --bag through the ROS 1 wrapper when it is part of the build.
-static std::vector<krp::RawlogStep> readSteps(std::map<std::string, std::string>& s) {
+// The steps from --rawlog, --carmen, or --bag through the ROS 1 wrapper when it is part of the
+// build. A CARMEN log's own poses go to `logged_truth` (the map's source frame).
+static std::vector<krp::RawlogStep> readSteps(std::map<std::string, std::string>& s,
+                                              std::vector<mrpt::math::TPose2D>* logged_truth) {
+  if (!s["carmen"].empty()) {
+    krp::CarmenLogParams p;
+    p.flaser_fov_deg = toNumber(s, "carmen_fov_deg");
+    auto log = krp::readCarmenLog(s["carmen"], p);
+    std::cout << "carmen: " << log.steps.size() << " of " << log.laser_lines << " laser lines used ("
+              << log.other_records << " other records ignored";
+    if (log.skipped_scans) std::cout << "; " << log.skipped_scans << " scans skipped, first: " << log.first_skip_reason;
+    std::cout << "); no return at >= " << log.max_range_m << " m, laser " << log.laser_offset_x_m << " m ahead\n";
+    *logged_truth = std::move(log.logged_poses);
+    return std::move(log.steps);
+  }
   if (s["bag"].empty()) return krp::readRawlog(s["rawlog"]);
 #ifdef KRP_WITH_ROS1
   krp::ros1::BagReadParams p;
@@ -118,20 +181,27 @@ static std::vector<krp::RawlogStep> readSteps(std::map<std::string, std::string>
 
 static int run(int argc, char** argv) {
   CliArgs args("krp-localize",
-               "Runs MRPT's particle filter over a rawlog from a global (unknown) start and writes the poses as CSV "
-               "and a _SUMMARY.txt; with ground truth it reports the errors. Settings come from --ini "
+               "Runs MRPT's particle filter over a rawlog, CARMEN log or bag from a global (unknown) start and writes "
+               "the poses as CSV and a _SUMMARY.txt; with ground truth it reports the errors. Or relocalizes single "
+               "scans without the filter (--single-scan). Settings come from --ini "
                "([localize] section, keys as the flags with '_') and flags override them.",
                {{"ini", "FILE", "INI file with a [localize] section", ""},
                 {"map", "FILE", "map (.yaml, .gridmap[.gz], .bt/.ot)", ""},
                 {"rawlog", "FILE", "MRPT rawlog with odometry + 2D scans", ""},
                 {"bag", "FILE", "ROS 1 bag with LaserScan + tf instead of --rawlog (builds with ROS 1)", ""},
+                {"carmen", "FILE", "CARMEN log (.log or .log.gz; FLASER / ROBOTLASER1 lines) instead of --rawlog", ""},
+                {"carmen-fov-deg", "DEG", "--carmen: field of view of FLASER lines (they state none)", "180"},
+                {"truth-from-log", "0|1", "--carmen: the log's own poses are the ground truth (a SLAM-corrected log)", "0"},
                 {"scan-topic", "TOPIC", "--bag: the LaserScan topic", "/scan"},
                 {"odom-frame", "FRAME", "--bag: odometry frame", "odom"},
                 {"base-frame", "FRAME", "--bag: robot frame", "base_link"},
                 {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform or global-matcher", "amcl-kld"},
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
-                {"single-scan", "STEP", "relocalize from this rawlog step's scan only: print the hypotheses, write "
-                 "hypotheses.json and hypotheses.png (-1 = run the filter)", "-1"},
+                {"single-scan", "STEP|all", "relocalize from this step's scan only: print the hypotheses, write "
+                 "hypotheses.json and hypotheses.png; 'all': every scan on its own, written as single_scan.csv/.png "
+                 "with counts against the ground truth (-1 = run the filter). Uses --models, or the global matcher "
+                 "with --method global-matcher", "-1"},
+                {"single-scan-stride", "N", "--single-scan all: every N-th scan", "1"},
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"ground-truth", "FILE", "ground truth 'step x y phi' (optional)", ""},
@@ -143,8 +213,12 @@ static int run(int argc, char** argv) {
                 {"kld-min", "N", "amcl-kld: min particles", "100"}});
   if (!args.parse(argc, argv)) return 0;
   auto s = mergeSettings(args);
-  if (s["map"].empty() || s["rawlog"].empty() == s["bag"].empty())
-    throw krp::InputError("arguments", "--map and one of --rawlog or --bag are required (flags or INI)\n" + args.usage());
+  const int inputs = !s["rawlog"].empty() + !s["bag"].empty() + !s["carmen"].empty();
+  if (s["map"].empty() || inputs != 1)
+    throw krp::InputError("arguments", "--map and one of --rawlog, --carmen or --bag are required (flags or INI)\n" + args.usage());
+  const bool truth_from_log = toNumber(s, "truth_from_log") != 0;
+  if (truth_from_log && (s["carmen"].empty() || !s["ground_truth"].empty()))
+    throw krp::InputError("--truth-from-log", "needs --carmen and no --ground-truth");
 
   krp::MethodSettings ms;
   ms.uniform.particles = static_cast<size_t>(toNumber(s, "uniform_particles"));
@@ -153,24 +227,42 @@ static int run(int argc, char** argv) {
   ms.amcl.min_particles = static_cast<size_t>(toNumber(s, "kld_min"));
   ms.relocalizer.top_zones = static_cast<int>(toNumber(s, "top_zones"));
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
-  const auto single_scan = static_cast<long>(toNumber(s, "single_scan"));
+  const bool every_scan = s["single_scan"] == "all";
+  const auto single_scan = every_scan ? 0L : static_cast<long>(toNumber(s, "single_scan"));
+  const auto stride = static_cast<long>(toNumber(s, "single_scan_stride"));
+  if (stride < 1) throw krp::InputError("--single-scan-stride", "must be at least 1");
+  const bool single_scan_mode = every_scan || single_scan >= 0;
+  const bool use_matcher = s["method"] == "global-matcher";
   const auto map = krp::loadOccupancyMap(s["map"]);
   std::shared_ptr<const krp::Relocalizer> relocalizer;
-  if (krp::methodNeedsModels(s["method"]) || single_scan >= 0) {
-    if (s["models"].empty()) throw krp::InputError("--models", "required by method '" + s["method"] + "' and --single-scan");
+  if (krp::methodNeedsModels(s["method"]) || (single_scan_mode && !use_matcher)) {
+    if (s["models"].empty())
+      throw krp::InputError("--models", "required by method '" + s["method"] + "' and by --single-scan unless --method global-matcher");
     relocalizer = std::make_shared<krp::Relocalizer>(s["models"], *map.grid, ms.relocalizer);
   }
-  const auto steps = readSteps(s);
   std::vector<mrpt::math::TPose2D> truth;
+  const auto steps = readSteps(s, &truth);
+  if (truth_from_log)
+    for (auto& t : truth) t = map.toGridFrame(t);
+  else
+    truth.clear();
   if (!s["ground_truth"].empty()) {
     truth = krp::readGroundTruth(s["ground_truth"]);
     if (truth.size() != steps.size())
       throw krp::InputError(s["ground_truth"], std::to_string(truth.size()) + " poses for " + std::to_string(steps.size()) +
-                                                   " rawlog steps");
+                                                   " steps");
   }
-  if (single_scan >= 0) return relocalizeOneScan(*relocalizer, *map.grid, steps, truth, single_scan, s["out_dir"]);
   krp::MethodResources resources{relocalizer, nullptr};
-  if (krp::methodNeedsMatcher(s["method"])) resources.matcher = std::make_shared<krp::MatcherRelocalizer>(*map.grid, ms.matcher);
+  if (krp::methodNeedsMatcher(s["method"]) || (single_scan_mode && use_matcher))
+    resources.matcher = std::make_shared<krp::MatcherRelocalizer>(*map.grid, ms.matcher);
+  const std::string input = !s["bag"].empty() ? s["bag"] : !s["carmen"].empty() ? s["carmen"] : s["rawlog"];
+  if (single_scan_mode) {
+    const SingleScanBackend backend{use_matcher ? nullptr : relocalizer, resources.matcher};
+    if (!every_scan) return relocalizeOneScan(backend, *map.grid, steps, truth, single_scan, s["out_dir"]);
+    const std::string header = "krp-localize summary\ncommand: " + args.commandLine() + "\nmap: " + s["map"] + "\ninput: " +
+                               input + "\nrelocalizer: " + (use_matcher ? "global-matcher" : "learned, " + s["models"]) + "\n";
+    return relocalizeEveryScan(backend, *map.grid, steps, truth, static_cast<std::size_t>(stride), header, s["out_dir"]);
+  }
   auto init = krp::makeInitializer(s["method"], ms, resources);
   krp::MclParams mp;
   mp.seed = static_cast<uint32_t>(toNumber(s, "seed"));
@@ -193,7 +285,7 @@ static int run(int argc, char** argv) {
   krp::writeFileAtomically((out / "poses.csv").string(), csv.str());
   std::ostringstream sum;
   const auto& last = records.back();
-  sum << "krp-localize summary\ncommand: " << args.commandLine() << "\nmap: " << s["map"] << "\ninput: " << (s["bag"].empty() ? s["rawlog"] : s["bag"])
+  sum << "krp-localize summary\ncommand: " << args.commandLine() << "\nmap: " << s["map"] << "\ninput: " << input
       << "\nmethod: " << init->name() << "\nsteps: " << steps.size() << "\ninitial particles: " << records.front().particles
       << "\nfinal particles: " << last.particles << "\nfinal pose (grid frame): " << loc.particles().getMeanVal().asString()
       << "\nfinal std: " << last.std_xy_m << " m, " << last.std_phi_deg << " deg\n";

@@ -9,7 +9,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "mrpt_krp_plugin/bench/kidnap_report.h"
 #include "mrpt_krp_plugin/bench/line_plot.h"
+#include "mrpt_krp_plugin/bench/reliability.h"
 #include "mrpt_krp_plugin/common/atomic_file.h"
 
 namespace krp {
@@ -46,6 +48,28 @@ std::string relocalizerTable(const std::vector<MethodSummary>& summaries, double
       << " % |\n";
   }
   if (o.tellp() > 0) o << "\n";
+  return o.str();
+}
+
+/// Per method with a relocalizer: its best hypothesis's confidence against how often it was right.
+std::string reliabilitySections(const std::vector<TrialRecord>& records, double right_within_m) {
+  std::map<Key, std::vector<ConfidenceOutcome>> groups;
+  std::vector<Key> order;
+  for (const auto& r : records) {
+    if (r.seed_best_confidence < 0) continue;
+    const Key k{r.world, r.lidar, r.method};
+    if (!groups.count(k)) order.push_back(k);
+    groups[k].push_back({r.seed_best_confidence, r.seed_best_error_xy_m <= right_within_m});
+  }
+  if (order.empty()) return "";
+  std::ostringstream o;
+  o << "Does the relocalizer's confidence mean what it says? Its best hypothesis's confidence, binned, against how "
+       "often that hypothesis was within "
+    << right_within_m << " m of the truth (calibrated: right about as often as the mean confidence says). It says "
+       "\"localized\" from 0.8.\n\n";
+  for (const auto& k : order)
+    o << "**" << std::get<0>(k) << ", " << std::get<1>(k) << ", " << std::get<2>(k) << "**\n\n"
+      << reliabilityMarkdown(reliabilityTable(groups[k])) << "\n";
   return o.str();
 }
 
@@ -141,7 +165,8 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
   trials_csv << "world,lidar,method,trial,trial_seed,filter_seed,converged,updates_to_convergence,"
                 "distance_to_convergence_m,cpu_to_convergence_s,initial_particles,mean_particles,"
                 "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,total_cpu_s,"
-                "seed_hypotheses,seed_localized,seed_best_error_xy_m\n";
+                "seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,kidnap_step,kidnap_tracking_before,"
+                "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s\n";
   updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,particles,cpu_s,distance_m\n";
   for (const auto& r : records) {
     const auto& o = r.outcome;
@@ -150,7 +175,10 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                << o.distance_to_convergence_m << "," << o.cpu_to_convergence_s << "," << o.initial_particles << ","
                << o.mean_particles << "," << o.particle_updates_to_convergence << "," << o.final_error_xy_m << ","
                << o.final_error_phi_deg << "," << o.confident_but_wrong << "," << o.total_cpu_s << "," << r.seed_hypotheses
-               << "," << r.seed_localized << "," << r.seed_best_error_xy_m << "\n";
+               << "," << r.seed_localized << "," << r.seed_best_error_xy_m << "," << r.seed_best_confidence << ","
+               << r.kidnap_step << ","
+               << r.kidnap.tracking_before << "," << r.kidnap.updates_to_detect << "," << r.kidnap.recovered << ","
+               << r.kidnap.updates_to_recover << "," << r.kidnap.cpu_to_recover_s << "\n";
     for (size_t i = 0; i < r.updates.size(); ++i) {
       const auto& u = r.updates[i];
       updates_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << i << "," << u.error_xy_m
@@ -233,7 +261,9 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
      << cfg.criteria.confident_std_xy_m << " m and its heading std below " << cfg.criteria.confident_std_phi_deg
      << " deg, yet the mean is outside tolerance. Medians of updates, distance, CPU and particle-updates are over "
         "converged trials. Ratios are against uniform-mcl in this same run.\n\n"
-     << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m);
+     << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m)
+     << reliabilitySections(records, cfg.criteria.max_error_xy_m)
+     << kidnapSection(summarizeKidnaps(records), cfg.kidnap_at_step);
   for (const auto& stem : plot_files)
     md << "![converged " << stem << "](" << stem << "_converged.png)\n![particles " << stem << "](" << stem
        << "_particles.png)\n\n";

@@ -6,16 +6,40 @@
 #include <filesystem>
 #include <ostream>
 
+#include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/progress_bar.h"
 #include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/logs/carmen_log.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 #include "mrpt_krp_plugin/sim/world.h"
 
 namespace krp {
 namespace {
-// Streams of deriveSeed: one per (world, lidar, trial) and one for the filter.
-constexpr uint64_t kWorldStride = 1000000, kLidarStride = 10000, kFilterStream = 7777777;
+// Streams of deriveSeed: one per (world, lidar, trial), one for the filter, and one for the
+// second trial a kidnapped robot is carried into.
+constexpr uint64_t kWorldStride = 1000000, kLidarStride = 10000, kFilterStream = 7777777, kKidnapStream = 5555555;
+// A trial of `params.steps` steps whose robot is carried, at step `cfg.kidnap_at_step`, to the
+// start of a second trial at least `cfg.kidnap_min_distance_m` away.
+Trial generateKidnapTrial(const mrpt::maps::COccupancyGridMap2D& map, const LidarProfile& lidar, const TrialParams& params,
+                          const BenchConfig& cfg, uint64_t trial_seed) {
+  if (cfg.kidnap_at_step > params.steps)
+    throw InputError("kidnap step", std::to_string(cfg.kidnap_at_step) + " is past the trial's " + std::to_string(params.steps) +
+                                        " steps");
+  TrialParams first = params, second = params;
+  first.steps = cfg.kidnap_at_step - 1;
+  second.steps = params.steps - cfg.kidnap_at_step;
+  const Trial before = generateTrial(map, lidar, first, trial_seed);
+  for (int draw = 0; draw < cfg.kidnap_max_draws; ++draw) {
+    const Trial after = generateTrial(map, lidar, second, deriveSeed(trial_seed, kKidnapStream + static_cast<uint64_t>(draw)));
+    const auto& a = before.truth.back();
+    const auto& b = after.truth.front();
+    if (std::hypot(a.x - b.x, a.y - b.y) >= cfg.kidnap_min_distance_m) return kidnapTrial(before, after);
+  }
+  throw InputError("kidnap", "no second start at least " + std::to_string(cfg.kidnap_min_distance_m) + " m away in " +
+                                 std::to_string(cfg.kidnap_max_draws) + " draws: the map is too small");
+}
+
 }  // namespace
 
 std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
@@ -60,33 +84,53 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
       const uint64_t filter_seed = deriveSeed(trial_seed, kFilterStream);
       TrialParams tp = cfg.trial;
       tp.clutter = job.world.clutter;
-      const Trial trial = generateTrial(*job.map, job.lidar, tp, trial_seed);
+      const Trial trial = cfg.kidnap_at_step > 0 ? generateKidnapTrial(*job.map, job.lidar, tp, cfg, trial_seed)
+                                                 : generateTrial(*job.map, job.lidar, tp, trial_seed);
       const auto steps = trialToSteps(trial);
       if (!cfg.rawlog_dir.empty()) {
         const std::string base =
             (std::filesystem::path(cfg.rawlog_dir) / (job.world.name + "_" + job.lidar.name + "_trial" + std::to_string(t))).string();
         writeTrialRawlog(trial, base + ".rawlog", base + "_groundtruth.txt");
+        writeTrialCarmenLog(trial, base + ".carmen.log");
       }
       for (const auto& method : cfg.methods) {
         MclParams mp = cfg.mcl;
         mp.seed = static_cast<uint32_t>(filter_seed);
+        if (cfg.kidnap_at_step > 0) mp.kidnap.enabled = true;
         MethodSettings ms = cfg.method_settings;
         ms.seeded.seed = filter_seed;
         const auto init = makeInitializer(method, ms, job.resources);
         MclLocalizer loc(job.map, init, mp);
-        TrialRecord rec{job.world.name, job.lidar.name, method, t, trial_seed, filter_seed, free_m2, {}, {}};
-        for (size_t i = 0; i < steps.size(); ++i)
-          rec.updates.push_back(makeUpdateRecord(loc.update(steps[i]), trial.truth[i], trial.distance_m[i]));
+        TrialRecord rec;
+        rec.world = job.world.name;
+        rec.lidar = job.lidar.name;
+        rec.method = method;
+        rec.trial = t;
+        rec.trial_seed = trial_seed;
+        rec.filter_seed = filter_seed;
+        rec.free_area_m2 = free_m2;
+        size_t last_initialization = 0;  // the seeding to check is the last one (after a kidnap, the re-seeding)
+        for (size_t i = 0; i < steps.size(); ++i) {
+          const auto estimate = loc.update(steps[i]);
+          if (estimate.initialized) last_initialization = i;
+          rec.updates.push_back(makeUpdateRecord(estimate, trial.truth[i], trial.distance_m[i]));
+        }
         if (const auto seeded = std::dynamic_pointer_cast<SeededInitializer>(init); seeded && seeded->lastSeeding()) {
           const auto& ranking = seeded->lastSeeding()->ranking;
           rec.seed_hypotheses = static_cast<int>(ranking.hypotheses.size());
           rec.seed_localized = ranking.localized;
           if (!ranking.hypotheses.empty()) {
             const auto& best = ranking.hypotheses.front().pose;
-            rec.seed_best_error_xy_m = std::hypot(best.x - trial.truth[0].x, best.y - trial.truth[0].y);
+            rec.seed_best_confidence = ranking.hypotheses.front().confidence;
+            const auto& truth = trial.truth[last_initialization];
+            rec.seed_best_error_xy_m = std::hypot(best.x - truth.x, best.y - truth.y);
           }
         }
         rec.outcome = evaluateTrial(rec.updates, cfg.criteria);
+        if (cfg.kidnap_at_step > 0) {
+          rec.kidnap_step = cfg.kidnap_at_step;
+          rec.kidnap = evaluateKidnap(rec.updates, static_cast<std::size_t>(cfg.kidnap_at_step), cfg.criteria);
+        }
         bar.advance(1, job.world.name + "/" + method + " trial " + std::to_string(t) + " seed " + std::to_string(trial_seed));
         out.push_back(std::move(rec));
       }

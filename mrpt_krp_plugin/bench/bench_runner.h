@@ -22,7 +22,13 @@ struct BenchConfig {
   MethodSettings method_settings;
   MclParams mcl;
   ConvergenceCriteria criteria;
-  std::string rawlog_dir;  ///< when set, each trial is also written as a rawlog + ground truth
+  std::string rawlog_dir;  ///< when set, each trial is also written as a rawlog, a CARMEN log + ground truth
+  /// Kidnap mid-run: at this step (1 .. trial.steps) the robot is carried to the start of a
+  /// second trial, and every method runs with the filter's kidnap detector on. 0 = no kidnap.
+  int kidnap_at_step = 0;
+  /// The robot is carried at least this far (a second trial starting closer is redrawn). [m]
+  double kidnap_min_distance_m = 5.0;
+  int kidnap_max_draws = 50;  ///< second trials drawn before the map is declared too small
 };
 
 /// One method on one trial.
@@ -37,6 +43,9 @@ struct TrialRecord {
   int seed_hypotheses = -1;        ///< -1 for methods without a relocalizer
   bool seed_localized = false;     ///< it called itself localized
   double seed_best_error_xy_m = -1.0;  ///< its best hypothesis's distance to the truth [m]; -1 without one
+  double seed_best_confidence = -1.0;  ///< the confidence it gave its best hypothesis; -1 without one
+  int kidnap_step = -1;            ///< the update the robot was carried before; -1 without a kidnap
+  KidnapOutcome kidnap;            ///< valid when kidnap_step >= 0
 };
 
 /// Runs worlds x lidars x methods x trials. Each trial is simulated once and replayed for

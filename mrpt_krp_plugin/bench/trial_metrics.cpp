@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace krp {
 
@@ -19,6 +20,7 @@ UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& t
   r.particles = e.particles;
   r.cpu_s = e.cpu_s;
   r.distance_m = distance_m;
+  r.kidnap_detected = e.kidnap_detected;
   return r;
 }
 
@@ -52,6 +54,23 @@ TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& u, const Convergence
   o.final_error_phi_deg = last.error_phi_deg;
   o.confident_but_wrong = !within(last) && last.std_xy_m < c.confident_std_xy_m && last.std_phi_deg < c.confident_std_phi_deg;
   return o;
+}
+
+KidnapOutcome evaluateKidnap(const std::vector<UpdateRecord>& u, std::size_t kidnap_step, const ConvergenceCriteria& c) {
+  if (kidnap_step == 0 || kidnap_step >= u.size())
+    throw std::invalid_argument("kidnap step " + std::to_string(kidnap_step) + " outside 1.." + std::to_string(u.size() - 1));
+  KidnapOutcome k;
+  const auto& before = u[kidnap_step - 1];
+  k.tracking_before = before.error_xy_m <= c.max_error_xy_m && before.error_phi_deg <= c.max_error_phi_deg;
+  for (std::size_t i = kidnap_step; i < u.size() && k.updates_to_detect < 0; ++i)
+    if (u[i].kidnap_detected) k.updates_to_detect = static_cast<int>(i - kidnap_step) + 1;
+  const std::vector<UpdateRecord> after(u.begin() + static_cast<std::ptrdiff_t>(kidnap_step), u.end());
+  const TrialOutcome o = evaluateTrial(after, c);
+  k.recovered = o.converged;
+  k.updates_to_recover = o.updates_to_convergence;
+  k.cpu_to_recover_s = o.cpu_to_convergence_s;
+  k.confident_but_wrong = o.confident_but_wrong;
+  return k;
 }
 
 double median(std::vector<double> v) {

@@ -26,6 +26,7 @@ struct UpdateRecord {
   std::size_t particles = 0;
   double cpu_s = 0.0;
   double distance_m = 0.0;   ///< true distance travelled up to this update [m]
+  bool kidnap_detected = false;  ///< the filter's kidnap detector fired at this update
 };
 
 UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& truth, double distance_m);
@@ -46,6 +47,20 @@ struct TrialOutcome {
 };
 
 TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& updates, const ConvergenceCriteria& criteria);
+
+/// How a filter fared when the robot was carried away mid-run (the kidnap at `kidnap_step`).
+struct KidnapOutcome {
+  bool tracking_before = false;   ///< within tolerance at the update before the kidnap
+  int updates_to_detect = -1;     ///< 1 = the detector fired at the first update after the kidnap; -1 never
+  bool recovered = false;         ///< within tolerance again at some update after it, and every later one
+  int updates_to_recover = -1;    ///< counted from the kidnap (1 = the first update after it); -1 if never
+  double cpu_to_recover_s = -1.0; ///< localization CPU from the kidnap to recovery [s]
+  bool confident_but_wrong = false;  ///< at the last update
+};
+
+/// Throws std::invalid_argument for a kidnap step outside 1 .. updates-1.
+KidnapOutcome evaluateKidnap(const std::vector<UpdateRecord>& updates, std::size_t kidnap_step,
+                             const ConvergenceCriteria& criteria);
 
 /// Median of values (NaN for none).
 double median(std::vector<double> values);

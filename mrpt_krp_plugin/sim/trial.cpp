@@ -89,4 +89,16 @@ Trial generateTrial(const mrpt::maps::COccupancyGridMap2D& map, const LidarProfi
   return t;
 }
 
+Trial kidnapTrial(const Trial& before, const Trial& after) {
+  Trial t = before;
+  const double walked = before.distance_m.empty() ? 0.0 : before.distance_m.back();
+  for (size_t i = 0; i < after.truth.size(); ++i) {
+    t.truth.push_back(after.truth[i]);
+    t.odometry.push_back(i == 0 ? mrpt::poses::CPose2D() : after.odometry[i]);
+    t.distance_m.push_back(walked + after.distance_m[i]);
+    t.scans.push_back(after.scans[i]);
+  }
+  return t;
+}
+
 }  // namespace krp

@@ -48,4 +48,9 @@ struct Trial {
 Trial generateTrial(const mrpt::maps::COccupancyGridMap2D& map, const LidarProfile& lidar, const TrialParams& params,
                     uint64_t seed);
 
+/// A robot tracked along `before`, then carried (kidnapped) to where `after` starts: the step
+/// across has no odometry (the wheels did not turn) and the carried distance is not counted.
+/// The kidnap is at index `before.truth.size()`. Keeps `before`'s seed.
+Trial kidnapTrial(const Trial& before, const Trial& after);
+
 }  // namespace krp

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mrpt_krp_plugin/bench/bench_report.h"
+#include "mrpt_krp_plugin/bench/kidnap_report.h"
 #include "mrpt_krp_plugin/bench/trial_metrics.h"
 
 namespace krp {
@@ -69,30 +70,62 @@ TEST(TrialMetrics, UpdateRecordFromEstimate) {
   EXPECT_EQ(r.particles, 42u);
 }
 
+TEST(TrialMetrics, KidnapDetectionAndRecoveryCountFromTheKidnap) {
+  // Tracking (updates 0-2), carried before update 3: the old pose is 6 m off for three updates,
+  // the detector fires at update 5, the re-initialized filter is right from update 7 on.
+  std::vector<UpdateRecord> u = {rec(0.1, 1, 0.1, 500, 1, 0), rec(0.1, 1, 0.1, 500, 1, 0.2), rec(0.1, 1, 0.1, 500, 1, 0.4),
+                                 rec(6, 1, 0.1, 500, 2, 0.4),  rec(6, 1, 0.1, 500, 2, 0.6),   rec(6, 1, 0.1, 500, 2, 0.8),
+                                 rec(3, 40, 2.0, 5000, 4, 1.0), rec(0.1, 1, 0.1, 800, 3, 1.2), rec(0.1, 1, 0.1, 600, 1, 1.4)};
+  u[5].kidnap_detected = true;
+  const auto k = evaluateKidnap(u, 3, {});
+  EXPECT_TRUE(k.tracking_before);
+  EXPECT_EQ(k.updates_to_detect, 3);
+  EXPECT_TRUE(k.recovered);
+  EXPECT_EQ(k.updates_to_recover, 5);       // update 7 is the fifth after the kidnap
+  EXPECT_DOUBLE_EQ(k.cpu_to_recover_s, 13.0);  // 2 + 2 + 2 + 4 + 3
+  EXPECT_FALSE(k.confident_but_wrong);
+
+  // Never detected: it stays confidently at the old place.
+  u[5].kidnap_detected = false;
+  for (size_t i = 6; i < u.size(); ++i) u[i] = rec(6, 1, 0.1, 500, 1, 1.0);
+  const auto stuck = evaluateKidnap(u, 3, {});
+  EXPECT_EQ(stuck.updates_to_detect, -1);
+  EXPECT_FALSE(stuck.recovered);
+  EXPECT_TRUE(stuck.confident_but_wrong);
+  EXPECT_THROW(evaluateKidnap(u, 0, {}), std::invalid_argument);
+  EXPECT_THROW(evaluateKidnap(u, u.size(), {}), std::invalid_argument);
+}
+
 TEST(TrialMetrics, Median) {
   EXPECT_NEAR(median({3, 1, 2}), 2.0, 1e-12);
   EXPECT_NEAR(median({4, 1, 2, 3}), 2.5, 1e-12);
   EXPECT_TRUE(std::isnan(median({})));
 }
 
-}  // namespace
-// The relocalizer's own confident-but-wrong rate counts only trials where it said "localized".
-TEST(BenchSummary, RelocalizerRatesSeparateVerdictFromCorrectness) {
-  auto record = [](bool localized, double best_error_m) {
+TEST(BenchSummary, KidnapRatesAreOverTrialsThatWereTracking) {
+  auto trial = [](bool tracking, int detect, bool recovered, int recover) {
     TrialRecord r;
-    r.world = "w";
-    r.lidar = "l";
-    r.method = "global-matcher";
-    r.seed_hypotheses = 2;
-    r.seed_localized = localized;
-    r.seed_best_error_xy_m = best_error_m;
+    r.world = "w", r.lidar = "l", r.method = "m", r.kidnap_step = 5;
+    r.kidnap.tracking_before = tracking;
+    r.kidnap.updates_to_detect = detect;
+    r.kidnap.recovered = recovered;
+    r.kidnap.updates_to_recover = recover;
+    r.kidnap.cpu_to_recover_s = 1.0;
     return r;
   };
-  const auto s = summarize({record(true, 0.1), record(true, 3.0), record(false, 5.0), record(false, 0.2)}, 0.5);
+  // A lost filter that "detects" does not count; one tracking trial recovers, one does not.
+  const std::vector<TrialRecord> records = {trial(true, 3, true, 5), trial(true, -1, false, -1), trial(false, 1, true, 2)};
+  const auto s = summarizeKidnaps(records);
   ASSERT_EQ(s.size(), 1u);
-  EXPECT_DOUBLE_EQ(s[0].seed_localized_rate, 0.5);
-  EXPECT_DOUBLE_EQ(s[0].seed_best_right_rate, 0.5);
-  EXPECT_DOUBLE_EQ(s[0].seed_localized_wrong_rate, 0.25);
+  EXPECT_EQ(s[0].trials, 3);
+  EXPECT_EQ(s[0].tracking_before, 2);
+  EXPECT_DOUBLE_EQ(s[0].detected_rate, 0.5);
+  EXPECT_DOUBLE_EQ(s[0].recovered_rate, 0.5);
+  EXPECT_DOUBLE_EQ(s[0].median_updates_to_recover, 5.0);
+  EXPECT_NE(kidnapSection(s, 5).find("| w | l | m | 3 | 2 (66.7 %) | 50 % | 3 | 50 % | 5 |"), std::string::npos)
+      << kidnapSection(s, 5);
+  EXPECT_TRUE(kidnapSection(summarizeKidnaps({}), 5).empty());
 }
 
+}  // namespace
 }  // namespace krp

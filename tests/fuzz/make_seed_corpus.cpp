@@ -3,6 +3,7 @@
 // that fuzzing starts inside each format rather than at its first check.
 //   make_seed_corpus REPO_ROOT OUT_FOLDER
 #include <octomap/OcTree.h>
+#include <zlib.h>
 
 #include <filesystem>
 #include <fstream>
@@ -40,6 +41,29 @@ void writeBytes(const fs::path& p, const std::string& bytes) {
 }
 
 std::string prefixed(char selector, const std::string& bytes) { return std::string(1, selector) + bytes; }
+
+void writeGzip(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  gzFile f = gzopen(p.string().c_str(), "wb");
+  gzwrite(f, text.data(), static_cast<unsigned>(text.size()));
+  gzclose(f);
+}
+
+// A CARMEN log: settings, odometry, two FLASER lines and a ROBOTLASER1 line.
+std::string carmenLog() {
+  std::ostringstream s;
+  s << "# message formats defined: PARAM SYNC ODOM FLASER RLASER\n"
+       "PARAM robot_front_laser_max 8.0 nohost 0\nPARAM robot_frontlaser_offset 0.1 nohost 0\n"
+       "ODOM 0 0 0 0 0 0 1.0 seed 1.0\n";
+  for (int k = 0; k < 2; ++k) {
+    s << "FLASER 12";
+    for (int i = 0; i < 12; ++i) s << " " << 1.0 + 0.1 * i + k;
+    s << " " << k << " 0.5 0.1 " << k << " 0.5 0.1 " << 2 + k << " seed " << 2 + k << "\n";
+  }
+  s << "ROBOTLASER1 0 -1.57 3.14 0.2618 20.0 0.01 0 13 1 1 1 1 1 2 2 2 2 2 3 3 3 0 1.1 0.5 0.1 1.0 0.5 0.1 0 0 0.5 0.2 "
+       "100 4.0 seed 4.0\n";
+  return s.str();
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -107,6 +131,8 @@ int main(int argc, char** argv) {
   krp::writeTrialRawlog(trial, (scratch / "t.rawlog").string(), (scratch / "t_gt.txt").string());
   writeBytes(out / "rawlog_fuzzer/trial", readBytes(scratch / "t.rawlog"));
   writeBytes(out / "ground_truth_fuzzer/trial", readBytes(scratch / "t_gt.txt"));
+  writeBytes(out / "carmen_log_fuzzer/flaser_robotlaser", carmenLog());
+  writeGzip(out / "carmen_log_fuzzer/flaser_robotlaser_gz", carmenLog());
 #ifdef KRP_FUZZ_WITH_ROS1
   krp::ros1::test::writeTrialBag(trial, (scratch / "t.bag").string());
   writeBytes(out / "bag_fuzzer/trial", readBytes(scratch / "t.bag"));

@@ -85,6 +85,25 @@ TEST(Trial, ClutterChangesScansButNotTheMap) {
   EXPECT_GT(diff, 0.0);
 }
 
+TEST(Trial, KidnapCarriesTheRobotWithoutOdometry) {
+  const auto room = test::asymmetricRoom();
+  TrialParams p;
+  p.steps = 3;
+  const auto a = generateTrial(room, lidarProfileByName("omni_12m"), p, 1);
+  const auto b = generateTrial(room, lidarProfileByName("omni_12m"), p, 2);
+  const auto k = kidnapTrial(a, b);
+  ASSERT_EQ(k.truth.size(), 8u);
+  ASSERT_EQ(k.scans.size(), 8u);
+  EXPECT_EQ(k.scans[4], b.scans[0]);
+  EXPECT_DOUBLE_EQ(k.truth[4].x, b.truth[0].x);
+  // The carry shows no motion; the next step's odometry is the second trial's.
+  EXPECT_DOUBLE_EQ(k.odometry[4].norm(), 0.0);
+  EXPECT_DOUBLE_EQ(k.odometry[5].x(), b.odometry[1].x());
+  // The carried distance is not walked.
+  EXPECT_DOUBLE_EQ(k.distance_m[4], a.distance_m[3]);
+  EXPECT_DOUBLE_EQ(k.distance_m[7], a.distance_m[3] + b.distance_m[3]);
+}
+
 TEST(Rawlog, WritesAndReadsBackTheSameSteps) {
   const auto dir = test::tempDir("rawlog");
   const auto room = test::asymmetricRoom();

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "support/test_maps.h"
 
+#include <unistd.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
+#include <vector>
 
 #include "mrpt_krp_plugin/sim/floor_plan.h"
 
@@ -18,10 +21,29 @@ mrpt::maps::COccupancyGridMap2D asymmetricRoom(double w, double h, double res) {
   return plan.toGrid();
 }
 
+namespace {
+// The folders this process made, removed when it exits (unless KRP_KEEP_TEST_DIRS is set, to
+// look at what a failing test wrote).
+class TempDirRegistry {
+ public:
+  ~TempDirRegistry() {
+    if (std::getenv("KRP_KEEP_TEST_DIRS")) return;
+    std::error_code ignored;
+    for (const auto& d : dirs_) std::filesystem::remove_all(d, ignored);
+  }
+  void add(const std::filesystem::path& d) { dirs_.push_back(d); }
+
+ private:
+  std::vector<std::filesystem::path> dirs_;
+};
+}  // namespace
+
 std::string tempDir(const std::string& name) {
+  static TempDirRegistry registry;
   const auto dir = std::filesystem::temp_directory_path() / ("krp_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  registry.add(dir);
   return dir.string();
 }
 

@@ -11,7 +11,8 @@ namespace krp::test {
 /// symmetry: a pose in it is unique from one scan.
 mrpt::maps::COccupancyGridMap2D asymmetricRoom(double width_m = 8.0, double height_m = 6.0, double resolution_m = 0.05);
 
-/// A fresh temporary folder for one test.
+/// A fresh temporary folder for one test, removed when the test process exits
+/// (kept when the environment variable KRP_KEEP_TEST_DIRS is set).
 std::string tempDir(const std::string& name);
 
 /// Writes `content` to `path` (creating folders).
