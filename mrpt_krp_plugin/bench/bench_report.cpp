@@ -12,6 +12,7 @@
 #include "mrpt_krp_plugin/bench/kidnap_report.h"
 #include "mrpt_krp_plugin/bench/line_plot.h"
 #include "mrpt_krp_plugin/bench/reliability.h"
+#include "mrpt_krp_plugin/bench/scaling_report.h"
 #include "mrpt_krp_plugin/common/atomic_file.h"
 
 namespace krp {
@@ -264,6 +265,12 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
      << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m)
      << reliabilitySections(records, cfg.criteria.max_error_xy_m)
      << kidnapSection(summarizeKidnaps(records), cfg.kidnap_at_step);
+  const auto scaling = scalingPoints(records);
+  const std::string scaling_md = scalingSection(scaling, "scaling.png");
+  if (!scaling_md.empty()) {
+    writeScalingPlot(scaling, (fs::path(out_dir) / "scaling.png").string());
+    md << scaling_md;
+  }
   for (const auto& stem : plot_files)
     md << "![converged " << stem << "](" << stem << "_converged.png)\n![particles " << stem << "](" << stem
        << "_particles.png)\n\n";
