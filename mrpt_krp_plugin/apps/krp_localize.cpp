@@ -123,11 +123,11 @@ int relocalizeOneScan(const SingleScanBackend& backend, const mrpt::maps::COccup
 int relocalizeEveryScan(const SingleScanBackend& backend, const mrpt::maps::COccupancyGridMap2D& map,
                         const std::vector<krp::RawlogStep>& steps, const std::vector<mrpt::math::TPose2D>& truth,
                         std::size_t stride, const std::string& header, const std::string& out_dir) {
-  const auto records = krp::sweepSingleScans(backend.source(), steps, truth, stride, krp::ConvergenceCriteria{}, &std::cout);
+  const krp::ConvergenceCriteria right;
+  const auto records = krp::sweepSingleScans(backend.source(), steps, truth, stride, right, &std::cout);
   const fs::path out(out_dir);
   krp::writeFileAtomically((out / "single_scan.csv").string(), krp::sweepCsv(records));
   krp::writeSweepPng(map, records, truth, (out / "single_scan.png").string());
-  const krp::ConvergenceCriteria right;
   std::ostringstream sum;
   sum << header << "mode: single scan, every " << stride << " scan(s), no filter\n"
       << "right means: best hypothesis within " << right.max_error_xy_m << " m and " << right.max_error_phi_deg

@@ -4,32 +4,29 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "mrpt_krp_plugin/bench/kidnap_report.h"
 #include "mrpt_krp_plugin/bench/line_plot.h"
+#include "mrpt_krp_plugin/bench/record_groups.h"
 #include "mrpt_krp_plugin/bench/reliability.h"
+#include "mrpt_krp_plugin/bench/report_format.h"
 #include "mrpt_krp_plugin/bench/scaling_report.h"
 #include "mrpt_krp_plugin/common/atomic_file.h"
 
 namespace krp {
 namespace {
 
-using Key = std::tuple<std::string, std::string, std::string>;
-
-std::string num(double v, int precision = 3) {
-  if (!std::isfinite(v)) return "-";
-  std::ostringstream o;
-  o << std::setprecision(precision) << v;
-  return o.str();
-}
-
 std::string ratio(double v, double ref) {
   if (!std::isfinite(v) || !std::isfinite(ref) || ref <= 0) return "-";
-  return num(v / ref, 3) + "x";
+  return formatNumber(v / ref, 3) + "x";
+}
+
+// The relocalizer's best hypothesis was right: within `right_within_m` of the truth.
+bool seedBestRight(const TrialRecord& r, double right_within_m) {
+  return r.seed_best_error_xy_m >= 0 && r.seed_best_error_xy_m <= right_within_m;
 }
 
 /// The first-scan relocalization of the methods that have one (seeded, global-matcher), before the filter runs.
@@ -44,8 +41,8 @@ std::string relocalizerTable(const std::vector<MethodSummary>& summaries, double
            "\"localized but wrong\" is the relocalizer's own confident-but-wrong rate: it said localized and its "
            "best was not right.\n\n"
         << "| world | lidar | method | localized | best right | localized but wrong |\n|---|---|---|---|---|---|\n";
-    o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << num(100.0 * s.seed_localized_rate)
-      << " % | " << num(100.0 * s.seed_best_right_rate) << " % | " << num(100.0 * s.seed_localized_wrong_rate)
+    o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << formatNumber(100.0 * s.seed_localized_rate)
+      << " % | " << formatNumber(100.0 * s.seed_best_right_rate) << " % | " << formatNumber(100.0 * s.seed_localized_wrong_rate)
       << " % |\n";
   }
   if (o.tellp() > 0) o << "\n";
@@ -54,40 +51,28 @@ std::string relocalizerTable(const std::vector<MethodSummary>& summaries, double
 
 /// Per method with a relocalizer: its best hypothesis's confidence against how often it was right.
 std::string reliabilitySections(const std::vector<TrialRecord>& records, double right_within_m) {
-  std::map<Key, std::vector<ConfidenceOutcome>> groups;
-  std::vector<Key> order;
-  for (const auto& r : records) {
-    if (r.seed_best_confidence < 0) continue;
-    const Key k{r.world, r.lidar, r.method};
-    if (!groups.count(k)) order.push_back(k);
-    groups[k].push_back({r.seed_best_confidence, r.seed_best_error_xy_m <= right_within_m});
-  }
-  if (order.empty()) return "";
+  const auto groups = groupByWorldLidarMethod(records, [](const TrialRecord& r) { return r.seed_best_confidence >= 0; });
+  if (groups.empty()) return "";
   std::ostringstream o;
   o << "Does the relocalizer's confidence mean what it says? Its best hypothesis's confidence, binned, against how "
        "often that hypothesis was within "
     << right_within_m << " m of the truth (calibrated: right about as often as the mean confidence says). It says "
        "\"localized\" from 0.8.\n\n";
-  for (const auto& k : order)
-    o << "**" << std::get<0>(k) << ", " << std::get<1>(k) << ", " << std::get<2>(k) << "**\n\n"
-      << reliabilityMarkdown(reliabilityTable(groups[k])) << "\n";
+  for (const auto& g : groups) {
+    std::vector<ConfidenceOutcome> answers;
+    for (const auto* r : g) answers.push_back({r->seed_best_confidence, seedBestRight(*r, right_within_m)});
+    o << "**" << g.front()->world << ", " << g.front()->lidar << ", " << g.front()->method << "**\n\n"
+      << reliabilityMarkdown(reliabilityTable(answers)) << "\n";
+  }
   return o.str();
 }
 
 }  // namespace
 
 std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, double right_within_m) {
-  std::map<Key, std::vector<const TrialRecord*>> groups;
-  std::vector<Key> order;
-  for (const auto& r : records) {
-    const Key k{r.world, r.lidar, r.method};
-    if (!groups.count(k)) order.push_back(k);
-    groups[k].push_back(&r);
-  }
   std::vector<MethodSummary> out;
-  for (const auto& k : order) {
-    const auto& g = groups[k];
-    MethodSummary s{std::get<0>(k), std::get<1>(k), std::get<2>(k)};
+  for (const auto& g : groupByWorldLidarMethod(records)) {
+    MethodSummary s{g.front()->world, g.front()->lidar, g.front()->method};
     s.trials = static_cast<int>(g.size());
     std::vector<double> upd, dist, cpu, init, meanp, pupd, ferr, ferr_c, fphi_c;
     int ok = 0, cbw = 0, seeded = 0, seed_localized = 0, seed_right = 0, seed_localized_wrong = 0;
@@ -96,7 +81,7 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, do
       if (r->seed_hypotheses >= 0) {
         ++seeded;
         seed_localized += r->seed_localized ? 1 : 0;
-        const bool right = r->seed_best_error_xy_m >= 0 && r->seed_best_error_xy_m <= right_within_m;
+        const bool right = seedBestRight(*r, right_within_m);
         seed_right += right ? 1 : 0;
         seed_localized_wrong += (r->seed_localized && !right) ? 1 : 0;
       }
@@ -145,13 +130,13 @@ std::string summaryTable(const std::vector<MethodSummary>& summaries, const std:
     for (const auto& r : summaries)
       if (r.world == s.world && r.lidar == s.lidar && r.method == reference_method) ref = &r;
     o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << s.trials << " | "
-      << num(100.0 * s.success_rate, 3) << " % | " << num(100.0 * s.confident_wrong_rate, 3) << " % | "
-      << num(s.median_updates) << " | " << num(s.median_distance_m) << " | " << num(s.median_cpu_s) << " | "
-      << (ref ? ratio(s.median_cpu_s, ref->median_cpu_s) : "-") << " | " << num(s.median_initial_particles, 6) << " | "
+      << formatNumber(100.0 * s.success_rate, 3) << " % | " << formatNumber(100.0 * s.confident_wrong_rate, 3) << " % | "
+      << formatNumber(s.median_updates) << " | " << formatNumber(s.median_distance_m) << " | " << formatNumber(s.median_cpu_s) << " | "
+      << (ref ? ratio(s.median_cpu_s, ref->median_cpu_s) : "-") << " | " << formatNumber(s.median_initial_particles, 6) << " | "
       << (ref ? ratio(s.median_initial_particles, ref->median_initial_particles) : "-") << " | "
-      << num(s.median_mean_particles, 6) << " | " << num(s.median_particle_updates, 6) << " | "
-      << num(s.median_final_error_converged_m) << " | " << num(s.median_final_error_phi_deg) << " | "
-      << num(s.median_final_error_m) << " |\n";
+      << formatNumber(s.median_mean_particles, 6) << " | " << formatNumber(s.median_particle_updates, 6) << " | "
+      << formatNumber(s.median_final_error_converged_m) << " | " << formatNumber(s.median_final_error_phi_deg) << " | "
+      << formatNumber(s.median_final_error_m) << " |\n";
   }
   return o.str();
 }

@@ -2,46 +2,25 @@
 #include "mrpt_krp_plugin/bench/kidnap_report.h"
 
 #include <cmath>
-#include <iomanip>
-#include <map>
 #include <sstream>
-#include <tuple>
+
+#include "mrpt_krp_plugin/bench/record_groups.h"
+#include "mrpt_krp_plugin/bench/report_format.h"
 
 namespace krp {
 namespace {
 
-std::string percent(double rate) {
-  if (!std::isfinite(rate)) return "-";
-  std::ostringstream o;
-  o << std::setprecision(3) << 100.0 * rate << " %";
-  return o.str();
-}
-
-std::string num(double v) {
-  if (!std::isfinite(v)) return "-";
-  std::ostringstream o;
-  o << std::setprecision(3) << v;
-  return o.str();
-}
+std::string percent(double rate) { return std::isfinite(rate) ? formatNumber(100.0 * rate) + " %" : "-"; }
 
 }  // namespace
 
 std::vector<KidnapSummary> summarizeKidnaps(const std::vector<TrialRecord>& records) {
-  using Key = std::tuple<std::string, std::string, std::string>;
-  std::map<Key, std::vector<const TrialRecord*>> groups;
-  std::vector<Key> order;
-  for (const auto& r : records) {
-    if (r.kidnap_step < 0) continue;
-    const Key k{r.world, r.lidar, r.method};
-    if (!groups.count(k)) order.push_back(k);
-    groups[k].push_back(&r);
-  }
   std::vector<KidnapSummary> out;
-  for (const auto& k : order) {
-    KidnapSummary s{std::get<0>(k), std::get<1>(k), std::get<2>(k)};
+  for (const auto& g : groupByWorldLidarMethod(records, [](const TrialRecord& r) { return r.kidnap_step >= 0; })) {
+    KidnapSummary s{g.front()->world, g.front()->lidar, g.front()->method};
     std::vector<double> detect, recover, cpu;
     int tracking = 0, recovered = 0, wrong = 0;
-    for (const auto* r : groups[k]) {
+    for (const auto* r : g) {
       const auto& o = r->kidnap;
       ++s.trials;
       // Detection and recovery only mean something for a filter that was tracking when the
@@ -86,9 +65,9 @@ std::string kidnapSection(const std::vector<KidnapSummary>& summaries, int kidna
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& s : summaries)
     o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << s.trials << " | "
-      << s.tracking_before << " (" << percent(s.tracking_before_rate) << ") | " << percent(s.detected_rate) << " | " << num(s.median_updates_to_detect)
-      << " | " << percent(s.recovered_rate) << " | " << num(s.median_updates_to_recover) << " | "
-      << num(s.median_cpu_to_recover_s) << " | " << percent(s.confident_wrong_rate) << " |\n";
+      << s.tracking_before << " (" << percent(s.tracking_before_rate) << ") | " << percent(s.detected_rate) << " | " << formatNumber(s.median_updates_to_detect)
+      << " | " << percent(s.recovered_rate) << " | " << formatNumber(s.median_updates_to_recover) << " | "
+      << formatNumber(s.median_cpu_to_recover_s) << " | " << percent(s.confident_wrong_rate) << " |\n";
   return o.str() + "\n";
 }
 

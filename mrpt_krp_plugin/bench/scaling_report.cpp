@@ -2,34 +2,21 @@
 #include "mrpt_krp_plugin/bench/scaling_report.h"
 
 #include <algorithm>
-#include <cmath>
-#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
 #include <tuple>
 
 #include "mrpt_krp_plugin/bench/line_plot.h"
+#include "mrpt_krp_plugin/bench/record_groups.h"
+#include "mrpt_krp_plugin/bench/report_format.h"
 
 namespace krp {
-namespace {
-
-std::string num(double v, int precision = 3) {
-  if (!std::isfinite(v)) return "-";
-  std::ostringstream o;
-  o << std::setprecision(precision) << v;
-  return o.str();
-}
-
-}  // namespace
 
 std::vector<ScalingPoint> scalingPoints(const std::vector<TrialRecord>& records) {
-  using Key = std::tuple<std::string, std::string, std::string>;
-  std::map<Key, std::vector<const TrialRecord*>> groups;
-  for (const auto& r : records) groups[{r.world, r.lidar, r.method}].push_back(&r);
   std::vector<ScalingPoint> out;
-  for (const auto& [k, recs] : groups) {
-    ScalingPoint p{std::get<0>(k), std::get<1>(k), std::get<2>(k)};
+  for (const auto& recs : groupByWorldLidarMethod(records)) {
+    ScalingPoint p{recs.front()->world, recs.front()->lidar, recs.front()->method};
     std::vector<double> particles, first_cpu, cpu;
     int converged = 0;
     for (const auto* r : recs) {
@@ -61,9 +48,9 @@ std::string scalingSection(const std::vector<ScalingPoint>& points, const std::s
     << "| method | lidar | world | free area m^2 | initial particles | first update CPU s | CPU to convergence s | "
        "success |\n|---|---|---|---|---|---|---|---|\n";
   for (const auto& p : points)
-    o << "| " << p.method << " | " << p.lidar << " | " << p.world << " | " << num(p.free_area_m2, 5) << " | "
-      << num(p.median_initial_particles, 6) << " | " << num(p.median_first_update_cpu_s) << " | "
-      << num(p.median_cpu_to_convergence_s) << " | " << num(100.0 * p.success_rate) << " % |\n";
+    o << "| " << p.method << " | " << p.lidar << " | " << p.world << " | " << formatNumber(p.free_area_m2, 5) << " | "
+      << formatNumber(p.median_initial_particles, 6) << " | " << formatNumber(p.median_first_update_cpu_s) << " | "
+      << formatNumber(p.median_cpu_to_convergence_s) << " | " << formatNumber(100.0 * p.success_rate) << " % |\n";
   o << "\n![cost by free area](" << plot_file << ")\n\n";
   return o.str();
 }

@@ -60,7 +60,7 @@ std::vector<SingleScanRecord> sweepSingleScans(const HypothesisSource& source, c
       if (!truth.empty()) {
         r.error_xy_m = std::hypot(h.pose.x - truth[i].x, h.pose.y - truth[i].y);
         r.error_phi_deg = std::abs(mrpt::math::wrapToPi(h.pose.phi - truth[i].phi)) * kRadToDeg;
-        r.best_right = r.error_xy_m <= right.max_error_xy_m && r.error_phi_deg <= right.max_error_phi_deg;
+        r.best_right = withinTolerance(r.error_xy_m, r.error_phi_deg, right);
       }
     }
     out.push_back(r);

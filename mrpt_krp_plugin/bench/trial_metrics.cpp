@@ -8,6 +8,10 @@
 
 namespace krp {
 
+bool withinTolerance(double error_xy_m, double error_phi_deg, const ConvergenceCriteria& c) {
+  return error_xy_m <= c.max_error_xy_m && error_phi_deg <= c.max_error_phi_deg;
+}
+
 UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& truth, double distance_m) {
   UpdateRecord r;
   r.error_xy_m = std::hypot(e.mean.x - truth.x, e.mean.y - truth.y);
@@ -27,7 +31,7 @@ UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& t
 TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& u, const ConvergenceCriteria& c) {
   TrialOutcome o;
   if (u.empty()) return o;
-  auto within = [&](const UpdateRecord& r) { return r.error_xy_m <= c.max_error_xy_m && r.error_phi_deg <= c.max_error_phi_deg; };
+  auto within = [&](const UpdateRecord& r) { return withinTolerance(r.error_xy_m, r.error_phi_deg, c); };
   // The first update from which every later update stays within tolerance.
   int first = -1;
   for (int i = static_cast<int>(u.size()) - 1; i >= 0 && within(u[i]); --i) first = i;
@@ -61,7 +65,7 @@ KidnapOutcome evaluateKidnap(const std::vector<UpdateRecord>& u, std::size_t kid
     throw std::invalid_argument("kidnap step " + std::to_string(kidnap_step) + " outside 1.." + std::to_string(u.size() - 1));
   KidnapOutcome k;
   const auto& before = u[kidnap_step - 1];
-  k.tracking_before = before.error_xy_m <= c.max_error_xy_m && before.error_phi_deg <= c.max_error_phi_deg;
+  k.tracking_before = withinTolerance(before.error_xy_m, before.error_phi_deg, c);
   for (std::size_t i = kidnap_step; i < u.size() && k.updates_to_detect < 0; ++i)
     if (u[i].kidnap_detected) k.updates_to_detect = static_cast<int>(i - kidnap_step) + 1;
   const std::vector<UpdateRecord> after(u.begin() + static_cast<std::ptrdiff_t>(kidnap_step), u.end());

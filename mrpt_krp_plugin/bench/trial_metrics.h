@@ -17,6 +17,9 @@ struct ConvergenceCriteria {
   double confident_std_phi_deg = 10.0;  ///< and heading std below this [deg]
 };
 
+/// An error within the criteria's position and heading tolerance.
+bool withinTolerance(double error_xy_m, double error_phi_deg, const ConvergenceCriteria& criteria);
+
 /// One filter update against the truth.
 struct UpdateRecord {
   double error_xy_m = 0.0;
