@@ -40,6 +40,7 @@ static int run(int argc, char** argv) {
                 {"size-px", "N", "submap image side", "160"},
                 {"size-m", "M", "submap side (0 = sized for the lidar)", "0"},
                 {"sdt-clip-m", "M", "SDT normalization distance", "2"},
+                {"orientation", "heading_up|wall_axes", "how submaps are turned: the robot's heading up, or the walls along the image axes", "wall_axes"},
                 {"block-m", "M", "floor block side for the split", "2"},
                 {"seed", "N", "seed (printed; the dataset is reproducible from it)", "1"}});
   if (!args.parse(argc, argv)) return 0;
@@ -86,12 +87,14 @@ static int run(int argc, char** argv) {
   p.scenario.strength = args.number("strength");
   p.submap = krp::submapParamsForLidar(in.lidar, static_cast<int>(args.integer("size-px")));
   if (args.number("size-m") > 0) p.submap.size_m = args.number("size-m");
+  p.submap.orientation = krp::parseOrientation(args.get("orientation"), "--orientation");
   p.sdt.clip_m = args.number("sdt-clip-m");
   p.split.block_m = args.number("block-m");
   p.seed = static_cast<uint64_t>(args.integer("seed"));
   p.split.seed = p.seed;
   std::cerr << "krp-dataset: world " << world.name << ", lidar " << in.lidar.name << ", " << in.zones.size()
-            << " zones, seed " << p.seed << ", submap " << p.submap.size_m << " m / " << p.submap.size_px << " px\n";
+            << " zones, seed " << p.seed << ", submap " << p.submap.size_m << " m / " << p.submap.size_px << " px, "
+            << krp::orientationName(p.submap.orientation) << "\n";
   const auto card = krp::generateDataset(in, p, args.get("out"), std::cerr);
   for (const auto& [split, zones] : card.counts) {
     int total = 0;

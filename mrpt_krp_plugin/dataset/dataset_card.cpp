@@ -40,7 +40,8 @@ std::string datasetCardJson(const DatasetCard& card, const DatasetParams& p, con
   j["submap"] = {{"size_m", p.submap.size_m},
                  {"size_px", p.submap.size_px},
                  {"resolution_m", p.submap.resolutionM()},
-                 {"no_return_free_fraction", p.submap.no_return_free_fraction}};
+                 {"no_return_free_fraction", p.submap.no_return_free_fraction},
+                 {"orientation", orientationName(p.submap.orientation)}};
   j["sdt_clip_m"] = p.sdt.clip_m;
   j["landmarks"] = {{"method", LandmarkParams::method()}, {"keypoints_per_zone", in.landmark_params.keypoints_per_zone}};
   j["keypoint_label"] = {{"observed_radius_cells", p.label.observed_radius_cells},

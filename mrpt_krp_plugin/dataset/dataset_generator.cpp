@@ -15,6 +15,7 @@
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
 #include "mrpt_krp_plugin/submap/occupancy_image.h"
 #include "mrpt_krp_plugin/submap/submap_builder.h"
+#include "mrpt_krp_plugin/submap/wall_axes.h"
 #include "mrpt_krp_plugin/zones/landmarks_yaml.h"
 #include "mrpt_krp_plugin/zones/zones_yaml.h"
 
@@ -79,7 +80,11 @@ DatasetCard generateDataset(const DatasetInputs& in, const DatasetParams& p, con
   card.lidar = in.lidar.name;
   for (const auto& z : in.zones) card.zones.push_back(z.name);
   std::ostringstream samples_csv;
-  samples_csv << "id,split,zone,x_m,y_m,phi_rad,block,world_variant,occluded,hits,keypoints_inside,keypoints_observed\n";
+  samples_csv << "id,split,zone,x_m,y_m,phi_rad,image_heading_rad,block,world_variant,occluded,hits,keypoints_inside,"
+                 "keypoints_observed\n";
+  // Wall-aligned submaps are drawn at the candidate the relocalizer would find right: the robot's
+  // heading relative to the map's wall axes, as near as the scan's own wall estimate allows.
+  const double map_axis_rad = mapWallAxes(*in.map).angle_rad;
 
   DatasetPreview preview(p.preview_per_zone);
   const int per_zone = p.samples_per_zone + p.changed_samples_per_zone;
@@ -94,7 +99,10 @@ DatasetCard generateDataset(const DatasetInputs& in, const DatasetParams& p, con
       const auto& world = is_changed ? changed_variants[variant] : variants[variant];
       auto scan = (is_changed ? changed_sim : sim).simulate(world, pose, rng);
       const bool occluded = applyOcclusion(*scan, is_changed ? changed : p.scenario, rng);
-      const Submap sub = buildSubmap(*scan, p.submap);
+      const double image_heading =
+          nearestHeading(submapImageHeadings(*scan, p.submap),
+                         p.submap.orientation == SubmapOrientation::kWallAxes ? pose.phi() - map_axis_rad : kHeadingUpRad);
+      const Submap sub = buildSubmap(*scan, p.submap, image_heading);
 
       char id[48];
       std::snprintf(id, sizeof(id), "z%02zu_%05d", z, i);
@@ -116,7 +124,7 @@ DatasetCard generateDataset(const DatasetInputs& in, const DatasetParams& p, con
       card.keypoint_objects[split] += label ? 1 : 0;
       card.observed_keypoints[split] += observed;
       samples_csv << id << "," << split << "," << in.zones[z].name << "," << pose.x() << "," << pose.y() << ","
-                  << pose.phi() << "," << p.split.blockId({pose.x(), pose.y()}) << "," << variant << ","
+                  << pose.phi() << "," << image_heading << "," << p.split.blockId({pose.x(), pose.y()}) << "," << variant << ","
                   << (occluded ? 1 : 0) << "," << sub.hits << "," << inside << "," << observed << "\n";
       bar.advance(1, in.zones[z].name);
     }

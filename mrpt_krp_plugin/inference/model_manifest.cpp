@@ -100,6 +100,9 @@ ModelManifest readModelManifest(const std::string& folder) {
   m.submap_size_m = field<double>(root, "submap.size_m", file);
   m.submap_size_px = field<int>(root, "submap.size_px", file);
   m.sdt_clip_m = field<double>(root, "sdt_clip_m", file);
+  // Manifests written before wall-aligned submaps existed have no orientation: heading up.
+  if (root.contains("submap") && root["submap"].is_object() && root["submap"].contains("orientation"))
+    m.submap_orientation = parseOrientation(field<std::string>(root, "submap.orientation", file), file);
   m.zones = field<std::vector<std::string>>(root, "zones", file);
   if (!(m.submap_size_m > 0) || m.submap_size_px <= 0 || !(m.sdt_clip_m > 0))
     throw InputError(file, "submap size and sdt_clip_m must be positive");

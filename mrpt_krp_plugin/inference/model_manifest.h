@@ -6,6 +6,8 @@
 
 #include <mrpt/math/TPoint2D.h>
 
+#include "mrpt_krp_plugin/submap/submap_params.h"
+
 namespace krp {
 
 /// How an 8-bit image becomes the model's float input: (value * scale - mean) / std.
@@ -36,6 +38,7 @@ struct ModelManifest {
   double map_resolution_m = 0;  ///< cell size of the map trained on; 0 when not recorded (non-YAML maps)
   double submap_size_m = 0;
   int submap_size_px = 0;
+  SubmapOrientation submap_orientation = SubmapOrientation::kHeadingUp;
   double sdt_clip_m = 0;
   std::vector<std::string> zones;
   /// landmarks[z][k]: map coordinates of zone z's k-th keypoint [m]

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 #include <sstream>
 
@@ -84,30 +85,51 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
   SubmapParams sp;
   sp.size_m = manifest_.submap_size_m;
   sp.size_px = manifest_.submap_size_px;
-  const Submap sub = buildSubmap(scan, sp);
-  const cv::Mat occupancy = renderOccupancyImage(sub.grid);
-  const cv::Mat sdt = renderSdtImage(sub.grid, SdtImageParams{manifest_.sdt_clip_m});
+  sp.orientation = manifest_.submap_orientation;
+  struct Turn {
+    Submap submap;
+    std::vector<float> probabilities;
+    float best = 0;
+  };
+  std::vector<Turn> turns;
+  for (double heading : submapImageHeadings(scan, sp)) turns.push_back({buildSubmap(scan, sp, heading), {}, 0});
+  std::vector<cv::Mat> occupancy;
+  for (const auto& turn : turns) occupancy.push_back(renderOccupancyImage(turn.submap.grid));
   r.times.submap_ms = msSince(t);
+  r.turns = static_cast<int>(turns.size());
 
   t = Clock::now();
-  r.zone_probabilities = classifier_.probabilities(occupancy);
+  for (size_t i = 0; i < turns.size(); ++i) {
+    turns[i].probabilities = classifier_.probabilities(occupancy[i]);
+    turns[i].best = *std::max_element(turns[i].probabilities.begin(), turns[i].probabilities.end());
+  }
+  std::stable_sort(turns.begin(), turns.end(), [](const Turn& a, const Turn& b) { return a.best > b.best; });
+  turns.resize(std::min<size_t>(turns.size(), static_cast<size_t>(std::max(params_.top_turns, 1))));
+  r.zone_probabilities = turns.front().probabilities;
   r.times.classifier_ms = msSince(t);
 
-  t = Clock::now();
-  const auto all = detector_.detect(sdt, params_.decode);  // best score first
-  r.times.keypoints_ms = msSince(t);
+  std::vector<PoseHypothesis> candidates;
+  for (const auto& turn : turns) {
+    t = Clock::now();
+    const cv::Mat sdt = renderSdtImage(turn.submap.grid, SdtImageParams{manifest_.sdt_clip_m});
+    r.times.submap_ms += msSince(t);
+    t = Clock::now();
+    const auto all = detector_.detect(sdt, params_.decode);  // best score first
+    r.times.keypoints_ms += msSince(t);
 
-  t = Clock::now();
-  std::vector<PoseDetection> used;
-  for (int zone : topZones(r.zone_probabilities, params_.top_zones)) {
-    int kept = 0;
-    for (const auto& d : all)
-      if (d.class_id == zone && kept < params_.max_detections_per_zone) used.push_back(d), ++kept;
+    t = Clock::now();
+    std::vector<PoseDetection> used;
+    for (int zone : topZones(turn.probabilities, params_.top_zones)) {
+      int kept = 0;
+      for (const auto& d : all)
+        if (d.class_id == zone && kept < params_.max_detections_per_zone) used.push_back(d), ++kept;
+    }
+    r.detections += static_cast<int>(used.size());
+    auto found = keypointHypotheses(used, turn.submap.grid, manifest_.landmarks, turn.probabilities, params_.keypoints);
+    candidates.insert(candidates.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
+    r.times.alignment_ms += msSince(t);
   }
-  r.detections = static_cast<int>(used.size());
-  auto candidates = keypointHypotheses(used, sub.grid, manifest_.landmarks, r.zone_probabilities, params_.keypoints);
   r.candidates = static_cast<int>(candidates.size());
-  r.times.alignment_ms = msSince(t);
 
   t = Clock::now();
   r.ranking = verifier_.verify(scan, std::move(candidates));

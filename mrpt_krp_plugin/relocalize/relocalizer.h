@@ -21,6 +21,10 @@ struct RelocalizerParams {
   /// zones: symmetric buildings make the top zone wrong often enough that verification against
   /// the map, not the classifier, should decide between look-alikes.
   int top_zones = 2;
+  /// Models trained on wall-aligned submaps see four turns of each scan; the keypoint model runs
+  /// on this many of them, those whose most likely zone the classifier is surest of. The turn
+  /// the classifier prefers is not always the right one, and verification decides.
+  int top_turns = 2;
   int max_detections_per_zone = 3;  ///< highest-scoring detections kept per zone
   /// Lower than ultralytics' prediction default (0.25): a weak detection only proposes a pose,
   /// which verification then accepts or rejects.
@@ -44,14 +48,16 @@ struct RelocalizationTimes {
 
 struct RelocalizationResult {
   Ranking ranking;                       ///< the hypotheses, best first, and whether localized
-  std::vector<float> zone_probabilities;  ///< manifest zone order
+  std::vector<float> zone_probabilities;  ///< manifest zone order, of the turn the classifier was surest of
+  int turns = 1;                          ///< submap turns the classifier saw (4 for wall-aligned models)
   int detections = 0;                     ///< keypoint-model detections used
   int candidates = 0;                     ///< poses proposed by the alignment
   RelocalizationTimes times;
 };
 
-/// One scan -> submap -> zone probabilities -> keypoints on the top zones -> robust SE(2)
-/// alignment to the zones' landmarks -> ICP and scan-fit verification against the map.
+/// One scan -> submap (one heading-up, or four wall-aligned turns) -> zone probabilities ->
+/// keypoints on the top zones of the top turns -> robust SE(2) alignment to the zones' landmarks
+/// -> ICP and scan-fit verification against the map.
 class Relocalizer {
  public:
   /// Loads `<models_dir>/manifest.json` and both models. InputError when the models or the

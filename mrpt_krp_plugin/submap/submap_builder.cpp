@@ -6,6 +6,7 @@
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/submap/scan_beams.h"
+#include "mrpt_krp_plugin/submap/wall_axes.h"
 
 namespace krp {
 namespace {
@@ -20,10 +21,12 @@ cv::Point toFixed(const cv::Point2d& p) {
 
 }  // namespace
 
-Submap buildSubmap(const std::vector<PosedScan>& scans, const SubmapParams& params) {
+Submap buildSubmap(const std::vector<PosedScan>& scans, const SubmapParams& params, double image_heading_rad) {
   validateSubmapParams(params);
+  if (!std::isfinite(image_heading_rad)) throw InputError("submap builder", "the image heading is not finite");
   Submap out;
   out.grid.resolution_m = params.resolutionM();
+  out.grid.image_heading_rad = image_heading_rad;
   out.grid.cells = cv::Mat::zeros(params.size_px, params.size_px, CV_8U);  // all unknown
   cv::Mat free = out.grid.cells.clone(), occupied = out.grid.cells.clone();
   for (const auto& ps : scans) {
@@ -53,8 +56,14 @@ Submap buildSubmap(const std::vector<PosedScan>& scans, const SubmapParams& para
   return out;
 }
 
-Submap buildSubmap(const mrpt::obs::CObservation2DRangeScan& scan, const SubmapParams& params) {
-  return buildSubmap(std::vector<PosedScan>{{&scan, mrpt::poses::CPose2D()}}, params);
+Submap buildSubmap(const mrpt::obs::CObservation2DRangeScan& scan, const SubmapParams& params,
+                   double image_heading_rad) {
+  return buildSubmap(std::vector<PosedScan>{{&scan, mrpt::poses::CPose2D()}}, params, image_heading_rad);
+}
+
+std::vector<double> submapImageHeadings(const mrpt::obs::CObservation2DRangeScan& scan, const SubmapParams& params) {
+  if (params.orientation == SubmapOrientation::kHeadingUp) return {kHeadingUpRad};
+  return wallAlignedImageHeadings(scanWallAxes(scan));
 }
 
 }  // namespace krp

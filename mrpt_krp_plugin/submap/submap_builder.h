@@ -27,11 +27,18 @@ struct Submap {
 };
 
 /// Builds the robot-centric submap by ray casting every beam: cells a beam crossed are free,
-/// cells where it ended are occupied (obstacles win over free space), the rest unknown.
+/// cells where it ended are occupied (obstacles win over free space), the rest unknown. The robot
+/// is drawn at `image_heading_rad` (LocalGrid); `params.orientation` is not consulted here.
 /// Throws InputError for unreadable scans or bad parameters.
-Submap buildSubmap(const std::vector<PosedScan>& scans, const SubmapParams& params);
+Submap buildSubmap(const std::vector<PosedScan>& scans, const SubmapParams& params,
+                   double image_heading_rad = kHeadingUpRad);
 
 /// One scan taken at the robot's current pose.
-Submap buildSubmap(const mrpt::obs::CObservation2DRangeScan& scan, const SubmapParams& params);
+Submap buildSubmap(const mrpt::obs::CObservation2DRangeScan& scan, const SubmapParams& params,
+                   double image_heading_rad = kHeadingUpRad);
+
+/// The image headings a submap of this scan is drawn at under `params.orientation`: heading up
+/// alone, or the four wall-aligned candidates (wallAlignedImageHeadings).
+std::vector<double> submapImageHeadings(const mrpt::obs::CObservation2DRangeScan& scan, const SubmapParams& params);
 
 }  // namespace krp

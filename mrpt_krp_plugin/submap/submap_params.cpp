@@ -17,6 +17,16 @@ SubmapParams submapParamsForLidar(const LidarProfile& lidar, int size_px, double
   return p;
 }
 
+std::string orientationName(SubmapOrientation o) {
+  return o == SubmapOrientation::kWallAxes ? "wall_axes" : "heading_up";
+}
+
+SubmapOrientation parseOrientation(const std::string& name, const std::string& what) {
+  if (name == "heading_up") return SubmapOrientation::kHeadingUp;
+  if (name == "wall_axes") return SubmapOrientation::kWallAxes;
+  throw InputError(what, "submap orientation '" + name + "' is not one of heading_up, wall_axes");
+}
+
 void validateSubmapParams(const SubmapParams& p) {
   if (!(p.size_m > 0 && std::isfinite(p.size_m))) throw InputError("submap parameters", "size_m must be > 0");
   if (p.size_px < 16 || p.size_px > 4096) throw InputError("submap parameters", "size_px must be in [16, 4096]");

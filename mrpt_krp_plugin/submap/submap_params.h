@@ -3,7 +3,24 @@
 
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
 
+#include <string>
+
 namespace krp {
+
+/// How a submap is turned before the models see it.
+enum class SubmapOrientation {
+  /// The robot's forward axis up: the models must recognise a place from any heading.
+  kHeadingUp,
+  /// The walls along the image's rows and columns, estimated from the scan (submap/wall_axes.h):
+  /// a place looks the same from every heading up to a quarter turn, and the relocalizer tries
+  /// the four turns. Needs walls that mostly meet at right angles.
+  kWallAxes,
+};
+
+/// "heading_up" or "wall_axes", as the dataset card and manifest.json write it.
+std::string orientationName(SubmapOrientation o);
+/// The inverse of orientationName; InputError(what, ...) naming the choices for anything else.
+SubmapOrientation parseOrientation(const std::string& name, const std::string& what);
 
 /// The submap's extent and cell count. The cell count is the models' input size, so the
 /// resolution is size_m / size_px.
@@ -19,6 +36,7 @@ struct SubmapParams {
   /// Each scan's hit points are marked this many cells thick, so one-cell walls survive
   /// the rasterization of slightly noisy rays [cells].
   int hit_radius_cells = 0;
+  SubmapOrientation orientation = SubmapOrientation::kHeadingUp;
 
   double resolutionM() const { return size_m / size_px; }
 };

@@ -9,9 +9,12 @@
 
 #include <mrpt/poses/CPose2D.h>
 
+#include <boost/make_shared.hpp>
 #include <filesystem>
+#include <vector>
 
 #include "bag_framing.h"
+#include "message_bounds.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 
 namespace krp::ros1 {
@@ -20,10 +23,28 @@ namespace {
 // tf2's cache must hold the whole bag: transforms are looked up after all are loaded.
 constexpr double kCacheMarginS = 10.0;
 
-void loadTransforms(const rosbag::Bag& bag, tf2::BufferCore& buffer) {
+/// The message, or null when it is of another type (as MessageInstance::instantiate). Its
+/// lengths are checked before roscpp sizes anything from them (message_bounds.h).
+template <typename Message>
+boost::shared_ptr<Message> decodeChecked(const rosbag::MessageInstance& m, const std::string& path,
+                                         std::string (*bounds_problem)(const uint8_t*, size_t)) {
+  if (!m.isType<Message>()) return nullptr;
+  std::vector<uint8_t> bytes(m.size());
+  ros::serialization::OStream out(bytes.data(), static_cast<uint32_t>(bytes.size()));
+  m.write(out);
+  const std::string problem = bounds_problem(bytes.data(), bytes.size());
+  if (!problem.empty())
+    throw InputError(path, "a " + m.getDataType() + " message on '" + m.getTopic() + "' is corrupt: " + problem);
+  auto msg = boost::make_shared<Message>();
+  ros::serialization::IStream in(bytes.data(), static_cast<uint32_t>(bytes.size()));
+  ros::serialization::deserialize(in, *msg);
+  return msg;
+}
+
+void loadTransforms(const rosbag::Bag& bag, tf2::BufferCore& buffer, const std::string& path) {
   rosbag::View view(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
   for (const auto& m : view) {
-    const auto tf = m.instantiate<tf2_msgs::TFMessage>();
+    const auto tf = decodeChecked<tf2_msgs::TFMessage>(m, path, tfMessageBoundsProblem);
     if (!tf) continue;
     const bool is_static = m.getTopic() == "/tf_static";
     for (const auto& t : tf->transforms) buffer.setTransform(t, "bag", is_static);
@@ -46,13 +67,13 @@ BagSteps readBag(const std::string& path, const BagReadParams& params) {
     if (all.size() == 0) throw InputError(path, "the bag holds no messages");
     const double length_s = (all.getEndTime() - all.getBeginTime()).toSec();
     tf2::BufferCore buffer(ros::Duration(length_s + kCacheMarginS));
-    loadTransforms(bag, buffer);
+    loadTransforms(bag, buffer, path);
 
     rosbag::View scans(bag, rosbag::TopicQuery(params.scan_topic));
     if (scans.size() == 0) throw InputError(path, "no messages on the scan topic '" + params.scan_topic + "'");
     std::optional<mrpt::poses::CPose2D> previous_odom;
     for (const auto& m : scans) {
-      const auto msg = m.instantiate<sensor_msgs::LaserScan>();
+      const auto msg = decodeChecked<sensor_msgs::LaserScan>(m, path, laserScanBoundsProblem);
       if (!msg) throw InputError(path, "topic '" + params.scan_topic + "' does not hold sensor_msgs/LaserScan");
       ++out.scans_seen;
       mrpt::poses::CPose3D laser_in_base;

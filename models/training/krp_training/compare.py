@@ -16,6 +16,7 @@ from pathlib import Path
 import torch
 
 from . import classifier_models, train_classifier
+from .augment import AugmentParams, max_rotation_deg
 from .image_folders import read_split
 from .train_map import DEFAULT_BIN_DIR, REPO_ROOT
 
@@ -88,13 +89,16 @@ def main(argv=None) -> int:
         for strength in (1.0, 0.0):
             d = _dataset(args.bin_dir, args.world, strength, args.samples_per_zone, args.seed,
                          Path(tmp) / f"strength{strength}")
-            zones = json.loads((d / "dataset_card.json").read_text())["zones"]
+            card = json.loads((d / "dataset_card.json").read_text())
+            zones = card["zones"]
+            augment = AugmentParams(max_rotation_deg=max_rotation_deg(card))
             sets = {s: read_split(d, s, zones) for s in ("train", "val", "test", "changed")}
             if strength > 0:
                 eval_sets = sets  # both variants are judged on the realistic (scenario) splits
             train_set = _limit(sets["train"], args.train_limit, args.seed)
             for arch in archs:
-                params = train_classifier.ClassifierParams(architecture=arch, epochs=args.epochs, seed=args.seed)
+                params = train_classifier.ClassifierParams(architecture=arch, epochs=args.epochs, seed=args.seed,
+                                                           augment=augment)
                 res = train_classifier.train(train_set, sets["val"], len(zones), params,
                                              progress_label=f"{arch} strength {strength}")
                 runs.append({"architecture": arch, "strength": strength, "epochs": args.epochs,
@@ -105,7 +109,8 @@ def main(argv=None) -> int:
         loo = None
         if not args.skip_loo:
             loo = leave_one_zone_out(eval_sets, zones, train_classifier.ClassifierParams(epochs=args.epochs,
-                                                                                          seed=args.seed))
+                                                                                          seed=args.seed,
+                                                                                          augment=augment))
     ratios = {}
     for arch in archs:
         w = next(r for r in runs if r["architecture"] == arch and r["strength"] > 0)

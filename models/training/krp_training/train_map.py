@@ -18,6 +18,7 @@ import torch
 import yaml
 
 from . import classifier_models, export, keypoint_error, manifest, plots, report, train_classifier, train_keypoints
+from .augment import AugmentParams, max_rotation_deg
 from .image_folders import SPLITS, read_split
 from .stage_timer import StageTimer
 
@@ -122,8 +123,10 @@ def main(argv=None) -> int:
     print(f"[krp-train-map] {len(zones)} zones; images: " + ", ".join(f"{s} {len(v)}" for s, v in sets.items()),
           file=sys.stderr)
 
+    rotation = max_rotation_deg(card)
     cp = train_classifier.ClassifierParams(architecture=args.classifier, epochs=args.classifier_epochs,
-                                           seed=args.seed, device=device)
+                                           seed=args.seed, device=device,
+                                           augment=AugmentParams(max_rotation_deg=rotation))
     est = n_train * cp.epochs * SECONDS_PER_IMAGE_EPOCH["compact"] if device == "cpu" else None
     with timer.stage("classifier", est):
         cls = train_classifier.train(sets["train"], sets["val"], len(zones), cp)
@@ -141,7 +144,7 @@ def main(argv=None) -> int:
         plots.confusion(cls_metrics["confusion"][s], zones, f"{name}: classifier, {s} split",
                         partial / "figures" / f"confusion_{s}.png")
 
-    kp = train_keypoints.KeypointParams(epochs=args.keypoint_epochs, seed=args.seed,
+    kp = train_keypoints.KeypointParams(epochs=args.keypoint_epochs, seed=args.seed, rotation_deg=rotation,
                                         device="0" if device == "cuda" else "cpu")
     img_px = int(card["submap"]["size_px"])
     est = n_train * kp.epochs * SECONDS_PER_IMAGE_EPOCH["yolo"] if device == "cpu" else None
