@@ -22,6 +22,8 @@ namespace krp::ros1 {
 namespace {
 // tf2's cache must hold the whole bag: transforms are looked up after all are loaded.
 constexpr double kCacheMarginS = 10.0;
+// A recording longer than a year is a corrupt stamp, not a log; ros::Duration holds 68 years.
+constexpr double kMaxBagLengthS = 365.0 * 24 * 3600;
 
 /// The message, or null when it is of another type (as MessageInstance::instantiate). Its
 /// lengths are checked before roscpp sizes anything from them (message_bounds.h).
@@ -65,7 +67,12 @@ BagSteps readBag(const std::string& path, const BagReadParams& params) {
   try {
     rosbag::View all(bag);
     if (all.size() == 0) throw InputError(path, "the bag holds no messages");
-    const double length_s = (all.getEndTime() - all.getBeginTime()).toSec();
+    // In doubles: ros::Time subtraction throws std::runtime_error when a corrupt stamp puts the
+    // span beyond 32-bit seconds (found by bag_fuzzer).
+    const double length_s = all.getEndTime().toSec() - all.getBeginTime().toSec();
+    if (!(length_s >= 0 && length_s <= kMaxBagLengthS))
+      throw InputError(path, "the bag's time stamps span " + std::to_string(length_s) +
+                                 " s: a stamp is corrupt (at most " + std::to_string(kMaxBagLengthS) + " s are accepted)");
     tf2::BufferCore buffer(ros::Duration(length_s + kCacheMarginS));
     loadTransforms(bag, buffer, path);
 
@@ -107,6 +114,11 @@ BagSteps readBag(const std::string& path, const BagReadParams& params) {
   } catch (const ros::Exception& e) {
     // A message shorter than its type says (found by bag_fuzzer): roscpp's StreamOverrunException.
     throw InputError(path, std::string("a message in the bag cannot be decoded: ") + e.what());
+  } catch (const InputError&) {
+    throw;  // already names the bag and the problem
+  } catch (const std::runtime_error& e) {
+    // rostime and tf2 report out-of-range stamps as std::runtime_error (bag_fuzzer).
+    throw InputError(path, std::string("a time stamp in the bag is out of range: ") + e.what());
   }
   if (out.steps.empty())
     throw InputError(path, "none of the " + std::to_string(out.scans_seen) + " scans could be used: " + out.first_problem);

@@ -64,6 +64,22 @@ TEST_F(ManifestTest, ReadsAValidManifest) {
   EXPECT_EQ(m.keypointsPath(), dir_.string() + "/k.onnx");
 }
 
+TEST_F(ManifestTest, SubmapOrientationIsReadHeadingUpWhenAbsentAndUnknownOnesRefused) {
+  EXPECT_EQ(readModelManifest(write(validManifest())).submap_orientation, SubmapOrientation::kHeadingUp);
+  json j = validManifest();
+  j["submap"]["orientation"] = "wall_axes";
+  EXPECT_EQ(readModelManifest(write(j)).submap_orientation, SubmapOrientation::kWallAxes);
+  j["submap"]["orientation"] = "north_up";
+  try {
+    readModelManifest(write(j));
+    FAIL() << "accepted an unknown orientation";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("north_up"), std::string::npos) << e.what();
+  }
+  j["submap"]["orientation"] = 3;
+  EXPECT_THROW(readModelManifest(write(j)), InputError);
+}
+
 TEST_F(ManifestTest, NamesAMissingField) {
   json j = validManifest();
   j["submap"].erase("size_px");

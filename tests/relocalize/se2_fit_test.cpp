@@ -25,7 +25,7 @@ TEST(Se2Fit, RecoversAnExactPoseFromTwoPoints) {
 }
 
 TEST(Se2Fit, WeightsPullTowardsTrustedPoints) {
-  const mrpt::math::TPose2D truth(0, 0, 0);
+  // Three points agree on the identity pose; the fourth does not.
   std::vector<Correspondence2D> c = {{{1, 0}, {1, 0}, 1.0}, {{0, 1}, {0, 1}, 1.0}, {{-1, 0}, {-1, 0}, 1.0}};
   c.push_back({{0, -1}, {0.6, -1}, 1e-6});  // a wrong point with almost no weight
   EXPECT_NEAR(fitSe2(c).pose.x, 0.0, 1e-5);

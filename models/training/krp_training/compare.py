@@ -21,11 +21,12 @@ from .image_folders import read_split
 from .train_map import DEFAULT_BIN_DIR, REPO_ROOT
 
 
-def _dataset(bin_dir: Path, world: str, strength: float, per_zone: int, seed: int, out: Path) -> Path:
+def _dataset(bin_dir: Path, world: str, strength: float, per_zone: int, seed: int, out: Path,
+             orientation: str = "wall_axes") -> Path:
     subprocess.run([str(bin_dir / "krp-dataset"), "--world", world, "--world-dir", str(REPO_ROOT / "sim_worlds"),
                     "--out", str(out), "--samples-per-zone", str(per_zone), "--changed-per-zone",
-                    str(max(10, per_zone // 10)), "--strength", str(strength), "--seed", str(seed)], check=True,
-                   stdout=subprocess.DEVNULL)
+                    str(max(10, per_zone // 10)), "--strength", str(strength), "--seed", str(seed),
+                    "--orientation", orientation], check=True, stdout=subprocess.DEVNULL)
     return out
 
 

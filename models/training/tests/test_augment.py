@@ -1,3 +1,4 @@
+import pytest
 import torch
 
 from krp_training.augment import UNKNOWN_GREY, AugmentParams, augment_batch
@@ -24,3 +25,12 @@ def test_rotation_keeps_grey_levels_and_fills_with_unknown():
     assert not torch.equal(out[0], img[0])  # something moved
     # corners are outside the rotated content: unknown
     assert int(out[:, 0, 0, 0].min()) == UNKNOWN_GREY
+
+
+def test_training_rotation_follows_the_dataset_orientation():
+    from krp_training.augment import max_rotation_deg
+    assert max_rotation_deg({"submap": {"orientation": "heading_up"}}) == 180.0
+    assert max_rotation_deg({"submap": {"orientation": "wall_axes"}}) < 10.0
+    assert max_rotation_deg({"submap": {}}) == 180.0  # cards from before orientations existed
+    with pytest.raises(ValueError, match="north_up"):
+        max_rotation_deg({"submap": {"orientation": "north_up"}})

@@ -18,6 +18,7 @@ def test_tiny_train_and_export(tmp_path, bin_dir):
     m = json.loads((out / "manifest.json").read_text())
     assert m["zones"] == ["west_wing", "east_wing"]
     assert m["classifier"]["input"]["shape"] == [1, 1, 160, 160]
+    assert m["submap"]["orientation"] == "wall_axes"  # krp-dataset's default, read by the C++ runtime
     assert m["keypoints"]["kpt_shape"] == [12, 3]
     assert m["classifier"]["ir_version"] <= 10 and m["keypoints"]["ir_version"] <= 10
     assert len(m["landmarks"]["zones"][0]["points"]) == 12
