@@ -9,12 +9,12 @@ from krp_training import train_map
 
 
 def test_tiny_train_and_export(tmp_path, bin_dir):
-    out = tmp_path / "models"
+    out = tmp_path / "office_two_zone"  # a --models-root layout, so krp-bench can use it below
     rc = train_map.main(["--world", "office_two_zone", "--out", str(out), "--work-dir", str(tmp_path / "work"),
                          "--samples-per-zone", "12", "--changed-per-zone", "3", "--classifier-epochs", "1",
                          "--keypoint-epochs", "1", "--bin-dir", str(bin_dir), "--device", "cpu"])
     assert rc == 0
-    assert not (tmp_path / "models.partial").exists()
+    assert not (tmp_path / "office_two_zone.partial").exists()
     m = json.loads((out / "manifest.json").read_text())
     assert m["zones"] == ["west_wing", "east_wing"]
     assert m["classifier"]["input"]["shape"] == [1, 1, 160, 160]
@@ -43,6 +43,16 @@ def test_tiny_train_and_export(tmp_path, bin_dir):
     assert res.returncode == 0, res.stderr
     assert json.loads(res.stdout)["models"][0]["sha256"] == m["classifier"]["sha256"]
 
+    # The C++ relocalizer runs these (wall-aligned) models inside the seeded filter: four turns of
+    # the submap through the classifier, the keypoint model on the top ones, verification.
+    res = subprocess.run([str(bin_dir / "krp-bench"), "--worlds", "office_two_zone", "--world-dir",
+                          str(train_map.REPO_ROOT / "sim_worlds"), "--methods", "seeded", "--models-root",
+                          str(tmp_path), "--trials", "1", "--steps", "1", "--out", str(tmp_path / "bench")],
+                         capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    trials = (tmp_path / "bench" / "trials.csv").read_text().splitlines()
+    assert len(trials) == 2 and ",seeded," in trials[1]
+
 
 def test_existing_output_survives_a_failed_run(tmp_path, bin_dir):
     out = tmp_path / "models"
@@ -54,3 +64,4 @@ def test_existing_output_survives_a_failed_run(tmp_path, bin_dir):
     except subprocess.CalledProcessError:
         pass
     assert (out / "keep.txt").read_text() == "previous models"
+
