@@ -88,20 +88,23 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
   sp.orientation = manifest_.submap_orientation;
   struct Turn {
     Submap submap;
+    cv::Mat occupancy;
     std::vector<float> probabilities;
-    float best = 0;
+    float best = 0;  ///< the highest zone probability: how sure the classifier is of this turn
   };
   std::vector<Turn> turns;
-  for (double heading : submapImageHeadings(scan, sp)) turns.push_back({buildSubmap(scan, sp, heading), {}, 0});
-  std::vector<cv::Mat> occupancy;
-  for (const auto& turn : turns) occupancy.push_back(renderOccupancyImage(turn.submap.grid));
+  for (double heading : submapImageHeadings(scan, sp)) {
+    Submap submap = buildSubmap(scan, sp, heading);
+    cv::Mat occupancy = renderOccupancyImage(submap.grid);
+    turns.push_back({std::move(submap), std::move(occupancy), {}, 0});
+  }
   r.times.submap_ms = msSince(t);
   r.turns = static_cast<int>(turns.size());
 
   t = Clock::now();
-  for (size_t i = 0; i < turns.size(); ++i) {
-    turns[i].probabilities = classifier_.probabilities(occupancy[i]);
-    turns[i].best = *std::max_element(turns[i].probabilities.begin(), turns[i].probabilities.end());
+  for (auto& turn : turns) {
+    turn.probabilities = classifier_.probabilities(turn.occupancy);
+    turn.best = *std::max_element(turn.probabilities.begin(), turn.probabilities.end());
   }
   std::stable_sort(turns.begin(), turns.end(), [](const Turn& a, const Turn& b) { return a.best > b.best; });
   turns.resize(std::min<size_t>(turns.size(), static_cast<size_t>(std::max(params_.top_turns, 1))));

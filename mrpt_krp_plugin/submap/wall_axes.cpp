@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/map/grid_image.h"
 #include "mrpt_krp_plugin/submap/scan_beams.h"
 
 namespace krp {
@@ -101,11 +102,9 @@ WallAxes scanWallAxes(const mrpt::obs::CObservation2DRangeScan& scan, const Wall
 
 WallAxes mapWallAxes(const mrpt::maps::COccupancyGridMap2D& map, const WallAxesParams& params) {
   validate(params);
-  const int w = static_cast<int>(map.getSizeX()), h = static_cast<int>(map.getSizeY());
-  if (w < 3 || h < 3) return {};
-  cv::Mat occupied(h, w, CV_32F);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) occupied.at<float>(y, x) = map.getCell(x, y) < 0.5f ? 1.0f : 0.0f;
+  if (map.getSizeX() < 3 || map.getSizeY() < 3) return {};
+  cv::Mat occupied;
+  occupiedMask(map).convertTo(occupied, CV_32F, 1.0 / 255.0);
   // Blurring first spreads a pixel staircase's gradients over all directions, so a round or
   // slanted wall does not vote for the grid's own axes.
   cv::GaussianBlur(occupied, occupied, cv::Size(), params.map_blur_cells);
@@ -113,11 +112,11 @@ WallAxes mapWallAxes(const mrpt::maps::COccupancyGridMap2D& map, const WallAxesP
   cv::Sobel(occupied, gx, CV_32F, 1, 0);
   cv::Sobel(occupied, gy, CV_32F, 0, 1);
   QuarterTurnHistogram hist(params);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const double ax = gx.at<float>(y, x), ay = gy.at<float>(y, x), m = std::hypot(ax, ay);
+  for (int row = 0; row < occupied.rows; ++row)
+    for (int col = 0; col < occupied.cols; ++col) {
+      // Image rows grow downwards, map y upwards: the row gradient is minus the map's y gradient.
+      const double ax = gx.at<float>(row, col), ay = -gy.at<float>(row, col), m = std::hypot(ax, ay);
       // A wall's edge is perpendicular to the gradient; modulo 90 deg the two are the same axis.
-      // Grid rows grow with map y, so the gradient is already in the map frame.
       if (m > 0) hist.add(std::atan2(ay, ax), m);
     }
   return hist.peak();

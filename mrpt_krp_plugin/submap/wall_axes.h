@@ -37,7 +37,7 @@ struct WallAxes {
 /// robot frame (the scan's sensor pose is applied).
 WallAxes scanWallAxes(const mrpt::obs::CObservation2DRangeScan& scan, const WallAxesParams& params = {});
 
-/// From the edges of the map's occupied cells (image gradients), in the map frame.
+/// From the edges of the map's occupied cells (occupiedMask, image gradients), in the map frame.
 WallAxes mapWallAxes(const mrpt::maps::COccupancyGridMap2D& map, const WallAxesParams& params = {});
 
 /// The four headings of the robot in an image whose axes follow the walls: with walls at

@@ -24,22 +24,18 @@ class Cursor {
 
   /// A count, then that many elements of `element_bytes` (1 for a string's characters).
   bool counted(size_t element_bytes, const char* field) {
-    uint32_t count = 0;
-    if (!problem_.empty() || !read(count, field)) return false;
-    if (static_cast<uint64_t>(count) * element_bytes > size_ - pos_) {
-      problem_ = std::string("field '") + field + "' states " + std::to_string(count) +
-                 " elements, more than the message's remaining " + std::to_string(size_ - pos_) + " bytes hold";
-      return false;
-    }
-    pos_ += static_cast<size_t>(count) * element_bytes;
+    uint32_t n = 0;
+    if (!count(n, field, element_bytes)) return false;
+    pos_ += static_cast<size_t>(n) * element_bytes;
     return true;
   }
 
-  /// An array whose elements have variable size: only the count, each element is walked by the caller.
+  /// A count whose elements take at least `min_element_bytes` each; the caller walks them.
   bool count(uint32_t& n, const char* field, size_t min_element_bytes) {
     if (!problem_.empty() || !read(n, field)) return false;
     if (static_cast<uint64_t>(n) * min_element_bytes > size_ - pos_) {
-      problem_ = std::string("field '") + field + "' states " + std::to_string(n) + " elements, more than fit";
+      problem_ = std::string("field '") + field + "' states " + std::to_string(n) +
+                 " elements, more than the message's remaining " + std::to_string(size_ - pos_) + " bytes hold";
       return false;
     }
     return true;

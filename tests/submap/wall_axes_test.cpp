@@ -40,6 +40,21 @@ mrpt::maps::COccupancyGridMap2D roundRoom(double radius_m) {
   return g;
 }
 
+// A rectangular room turned by `angle_rad` about the origin: its walls run at that angle.
+mrpt::maps::COccupancyGridMap2D turnedRoom(double angle_rad) {
+  mrpt::maps::COccupancyGridMap2D g(-8, 8, -8, 8, 0.05f);
+  g.fill(0.5f);
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  for (unsigned y = 0; y < g.getSizeY(); ++y)
+    for (unsigned x = 0; x < g.getSizeX(); ++x) {
+      const double wx = g.idx2x(x), wy = g.idx2y(y);
+      const double u = std::abs(c * wx + s * wy), v = std::abs(-s * wx + c * wy);  // room frame
+      if (u < 5.0 && v < 3.0) g.setCell(x, y, 1.0f);
+      else if (u < 5.2 && v < 3.2) g.setCell(x, y, 0.0f);
+    }
+  return g;
+}
+
 TEST(WallAxes, ScanGivesTheWallsDirectionInTheRobotFrameWhateverTheHeading) {
   const auto room = test::asymmetricRoom();
   for (double heading_deg : {0.0, 17.0, -33.0, 71.0, 150.0, -100.0}) {
@@ -65,6 +80,9 @@ TEST(WallAxes, MapAxesOfAnAxisAlignedMapAreZero) {
   const auto axes = mapWallAxes(test::asymmetricRoom());
   ASSERT_TRUE(axes.found);
   EXPECT_NEAR(axes.angle_rad, 0.0, 1.0 * kDeg);
+  const auto turned = mapWallAxes(turnedRoom(20.0 * kDeg));
+  ASSERT_TRUE(turned.found);
+  EXPECT_NEAR(turned.angle_rad, 20.0 * kDeg, 1.0 * kDeg);  // counter-clockwise in the map frame
   const auto round = mapWallAxes(roundRoom(4.0));
   EXPECT_FALSE(round.found) << round.support;
 }
