@@ -95,7 +95,7 @@ World readWorld(const std::string& path) {
 void writeWorld(const World& w, const std::string& path) {
   const fs::path dir = fs::path(path).parent_path();
   std::ostringstream o;
-  o << "# Simulated world for mrpt_krp_plugin (written by krp-make-worlds; see sim_worlds/README.md)\n"
+  o << "# Simulated world for mrpt_krp_plugin (written by krp-make-worlds; see the README, section 'Sim worlds')\n"
     << "name: " << w.name << "\nmap: " << fs::relative(w.map_path, dir).string()
     << "\nzones: " << fs::relative(w.zones_path, dir).string() << "\nlidar_profiles: [";
   for (size_t i = 0; i < w.lidar_profiles.size(); ++i) o << (i ? ", " : "") << w.lidar_profiles[i];

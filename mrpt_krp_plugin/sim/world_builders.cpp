@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/sim/world_builders.h"
 
+#include <cmath>
+
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/sim/floor_plan.h"
@@ -12,17 +14,21 @@ constexpr double kDoorWidthM = 0.9;
 constexpr double kMargin = 1.0;  ///< unknown border around each building [m]
 
 // Rooms between y0 and y1 along x in [x_start, x_end), walls between them, one door each
-// onto the corridor wall at y = door_wall_y.
-void roomRow(FloorPlan& plan, Rng& rng, double x_start, double x_end, double y0, double y1, double door_wall_y,
+// onto the corridor wall at y = door_wall_y. Returns the x of each wall between two rooms.
+std::vector<double> roomRow(FloorPlan& plan, Rng& rng, double x_start, double x_end, double y0, double y1, double door_wall_y,
              double min_w, double max_w, bool furnish) {
   plan.wall(x_start, door_wall_y, x_end, door_wall_y);
+  std::vector<double> room_walls;
   double x = x_start;
   while (x < x_end - 0.5) {
     double w = rng.uniform(min_w, max_w);
     if (x_end - (x + w) < min_w) w = x_end - x;
     const double door = rng.uniform(x + 0.6, x + w - 0.6 - kDoorWidthM);
     plan.free(door, door_wall_y - 0.2, door + kDoorWidthM, door_wall_y + 0.2);
-    if (x + w < x_end - 0.01) plan.wall(x + w, y0, x + w, y1);
+    if (x + w < x_end - 0.01) {
+      plan.wall(x + w, y0, x + w, y1);
+      room_walls.push_back(x + w);
+    }
     if (furnish && rng.bernoulli(0.7)) {
       // A desk or cabinet against the far wall: mapped furniture that makes rooms differ.
       const double fw = rng.uniform(0.8, std::min(2.0, w - 1.5)), fd = rng.uniform(0.5, 0.9);
@@ -34,6 +40,16 @@ void roomRow(FloorPlan& plan, Rng& rng, double x_start, double x_end, double y0,
     }
     x += w;
   }
+  return room_walls;
+}
+
+// The wall nearest to `target_x`, so that a zone boundary runs along it instead of through a room
+// (a room cut in two shows the classifier the same walls under two zone names).
+double nearestWall(const std::vector<double>& walls, double target_x) {
+  double best = target_x;
+  for (double x : walls)
+    if (best == target_x || std::abs(x - target_x) < std::abs(best - target_x)) best = x;
+  return best;
 }
 }  // namespace
 
@@ -50,14 +66,26 @@ BuiltWorld buildOfficeTwoZone(uint64_t seed) {
   const double x0 = kMargin, y0 = kMargin, x1 = kMargin + w, y1 = kMargin + h;
   plan.building(x0, y0, x1, y1);
   const double corridor_lo = y0 + 9.5, corridor_hi = y0 + 12.0;
-  roomRow(plan, rng, x0, x1, corridor_hi, y1, corridor_hi, 4.0, 7.5, true);
-  roomRow(plan, rng, x0, x1, y0, corridor_lo, corridor_lo, 4.0, 7.5, true);
+  const auto north_walls = roomRow(plan, rng, x0, x1, corridor_hi, y1, corridor_hi, 4.0, 7.5, true);
+  const auto south_walls = roomRow(plan, rng, x0, x1, y0, corridor_lo, corridor_lo, 4.0, 7.5, true);
   // An open lounge in the right wing: one wider gap in the lower corridor wall.
   plan.free(x0 + 24.0, corridor_lo - 0.2, x0 + 27.0, corridor_lo + 0.2);
   BuiltWorld out{"office_two_zone", plan.toGrid(), {}};
-  const double split = x0 + w / 2;
-  out.zones.push_back(rectangleZone("west_wing", 0.0, 0.0, split, h + 2 * kMargin, kWorldResolutionM));
-  out.zones.push_back(rectangleZone("east_wing", split, 0.0, w + 2 * kMargin, h + 2 * kMargin, kWorldResolutionM));
+  // The wings meet at the room walls nearest the middle; the corridor, with no wall to follow,
+  // is split at the middle.
+  const double mid = x0 + w / 2, north = nearestWall(north_walls, mid), south = nearestWall(south_walls, mid);
+  const double r = kWorldResolutionM / 2, W = w + 2 * kMargin, H = h + 2 * kMargin;
+  // Corners half a cell inside each zone, as in rectangleZone, so the two polygons never claim
+  // the same cell; a step's half-cell goes to the side of whichever zone lies beyond it.
+  const double south_side = south > mid ? 1.0 : -1.0, north_side = north > mid ? 1.0 : -1.0;
+  const double west_lo = corridor_lo - south_side * r, east_lo = corridor_lo + south_side * r;
+  const double west_hi = corridor_hi + north_side * r, east_hi = corridor_hi - north_side * r;
+  out.zones.push_back(Zone{"west_wing",
+                           {{r, r}, {south - r, r}, {south - r, west_lo}, {mid - r, west_lo}, {mid - r, west_hi},
+                            {north - r, west_hi}, {north - r, H - r}, {r, H - r}}});
+  out.zones.push_back(Zone{"east_wing",
+                           {{south + r, r}, {W - r, r}, {W - r, H - r}, {north + r, H - r}, {north + r, east_hi},
+                            {mid + r, east_hi}, {mid + r, east_lo}, {south + r, east_lo}}});
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/map/grid_image.h"
 #include "mrpt_krp_plugin/sim/world_builders.h"
 #include "mrpt_krp_plugin/zones/auto_zoning.h"
 #include "mrpt_krp_plugin/zones/zone_drawing.h"
@@ -121,6 +122,27 @@ TEST(WorldBuilders, DegenerateScenesHaveValidZonesAndTheirSize) {
   const auto hall = buildWorld("empty_hall", 1);
   EXPECT_TRUE(findZoneProblems(hall.map, hall.zones).empty());
   EXPECT_NEAR(freeAreaM2(hall.map), 40.0 * 30.0, 30.0);
+}
+
+// The wings meet along room walls: free space crosses from one zone to the other only in the
+// 2.5 m corridor, never through a room (which the classifier would see under two names).
+TEST(WorldBuilders, OfficeWingsMeetOnlyInTheCorridor) {
+  const auto world = buildOfficeTwoZone(1);
+  EXPECT_TRUE(findZoneProblems(world.map, world.zones).empty());
+  const cv::Mat free = freeMask(world.map), labels = rasterizeZones(world.map, world.zones);
+  int unzoned_free = 0, crossings = 0;
+  for (int r = 0; r < free.rows; ++r)
+    for (int c = 0; c < free.cols; ++c) {
+      if (!free.at<uint8_t>(r, c)) continue;
+      const int zone = labels.at<int>(r, c);
+      if (zone < 0) ++unzoned_free;
+      if (c + 1 < free.cols && free.at<uint8_t>(r, c + 1) && labels.at<int>(r, c + 1) != zone) ++crossings;
+      if (r + 1 < free.rows && free.at<uint8_t>(r + 1, c) && labels.at<int>(r + 1, c) != zone) ++crossings;
+    }
+  EXPECT_EQ(unzoned_free, 0);
+  const double corridor_width_m = 2.5;
+  EXPECT_GT(crossings, 0);
+  EXPECT_LE(crossings, corridor_width_m / kWorldResolutionM);
 }
 
 TEST(ZoneDrawing, WritesAPngOfTheMapSize) {
