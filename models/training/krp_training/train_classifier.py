@@ -67,7 +67,8 @@ def train(train_set: ImageSet, val_set: ImageSet, num_classes: int, params: Clas
         raise ValueError("the training split is empty")
     torch.manual_seed(params.seed)
     gen = torch.Generator().manual_seed(params.seed)
-    model = classifier_models.build(params.architecture, num_classes, params.dropout).to(params.device)
+    model = classifier_models.build(params.architecture, num_classes, params.dropout,
+                                    input_px=train_set.images.shape[-1]).to(params.device)
     opt = torch.optim.SGD(model.parameters(), lr=params.learning_rate, momentum=params.momentum,
                           weight_decay=params.weight_decay, nesterov=True)
     steps = params.epochs * ((len(train_set) + params.batch_size - 1) // params.batch_size)

@@ -4,6 +4,7 @@ Augmentations that would break the image's meaning are off: colour shifts (the s
 encode distance), scaling (pixels have a fixed metric size) and mirroring (it would swap landmarks
 in a way no robot sees). Rotation and shifts stay on: they are other headings and positions.
 """
+import random
 import shutil
 import time
 from dataclasses import dataclass, asdict
@@ -68,6 +69,28 @@ def _progress_bar(total_epochs: int):
         state["bar"].close()
 
     return {"on_train_start": on_train_start, "on_train_epoch_end": on_train_epoch_end, "on_train_end": on_train_end}
+
+
+def limit_training_images(data_yaml: Path, work_dir: Path, max_images: int, seed: int) -> Path:
+    """A copy of krp-dataset's data.yaml whose training split is at most `max_images` images,
+    drawn with `seed`; the yaml itself when the split is no larger.
+
+    The classifier learns from every image, but a YOLO epoch on a CPU costs about 0.05 s per image
+    (train_map.SECONDS_PER_IMAGE_EPOCH):
+    the cap keeps krp-train-map's keypoint stage inside its time budget however large the dataset.
+    """
+    doc = yaml.safe_load(Path(data_yaml).read_text())
+    root = Path(doc["path"])
+    images = sorted((root / doc["train"]).glob("*.png"))
+    if max_images <= 0 or len(images) <= max_images:
+        return Path(data_yaml)
+    chosen = sorted(random.Random(seed).sample(images, max_images))
+    listing = Path(work_dir) / "keypoint_train_images.txt"
+    listing.write_text("".join(f"{p.resolve()}\n" for p in chosen))
+    doc["train"] = str(listing.resolve())
+    limited = Path(work_dir) / "keypoints_data.yaml"
+    limited.write_text(yaml.safe_dump(doc, sort_keys=False))
+    return limited
 
 
 def train(data_yaml: Path, work_dir: Path, params: KeypointParams, imgsz: int) -> KeypointResult:

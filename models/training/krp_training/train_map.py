@@ -27,8 +27,10 @@ DEFAULT_BIN_DIR = REPO_ROOT / "build" / "mrpt_krp_plugin" / "apps"
 
 # Measured on 2 CPU cores (shared/notes/dependencies.md and our runs), to give a first time estimate
 # before the progress bars take over with their own.
-SECONDS_PER_IMAGE_EPOCH = {"compact": 0.02, "yolo": 0.05}
+SECONDS_PER_IMAGE_EPOCH = {"compact": 0.008, "yolo": 0.05}
 DATASET_SECONDS_PER_IMAGE = 0.008
+# The keypoint model's training images: 600 x 40 epochs is ~20 min of a 2-core CPU.
+KEYPOINT_TRAIN_IMAGES = 600
 
 
 def parse_args(argv):
@@ -41,12 +43,16 @@ def parse_args(argv):
     p.add_argument("--lidar", help="lidar profile (default: the world's default; omni_12m for --map)")
     p.add_argument("--out", required=True, help="model folder to write (replaced at the end if it exists)")
     p.add_argument("--work-dir", help="dataset and training runs (default: out/train/<name>)")
-    p.add_argument("--samples-per-zone", type=int, default=400)
-    p.add_argument("--changed-per-zone", type=int, default=60)
+    p.add_argument("--samples-per-zone", type=int, default=4000,
+                   help="poses per zone; the classifier trains on all, the keypoint model on a subset")
+    p.add_argument("--changed-per-zone", type=int, default=150)
     p.add_argument("--strength", type=float, default=1.0, help="scenario generation strength (0 = off)")
     p.add_argument("--classifier", default="compact", choices=classifier_models.ARCHITECTURES)
-    p.add_argument("--classifier-epochs", type=int, default=20)
+    p.add_argument("--classifier-epochs", type=int, default=15)
     p.add_argument("--keypoint-epochs", type=int, default=40)
+    p.add_argument("--keypoint-train-images", type=int, default=KEYPOINT_TRAIN_IMAGES,
+                   help="at most this many training images for the keypoint model, drawn with --seed "
+                        "(0 = all); the classifier always gets all of them")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--device", default="auto", help="auto (GPU when there is one), cpu or cuda")
     p.add_argument("--bin-dir", default=str(DEFAULT_BIN_DIR), help="where the built C++ apps are")
@@ -147,9 +153,12 @@ def main(argv=None) -> int:
     kp = train_keypoints.KeypointParams(epochs=args.keypoint_epochs, seed=args.seed, rotation_deg=rotation,
                                         device="0" if device == "cuda" else "cpu")
     img_px = int(card["submap"]["size_px"])
-    est = n_train * kp.epochs * SECONDS_PER_IMAGE_EPOCH["yolo"] if device == "cpu" else None
+    kp_yaml = train_keypoints.limit_training_images(dataset_dir / "keypoints" / "data.yaml", work,
+                                                    args.keypoint_train_images, args.seed)
+    n_kp_train = min(n_train, args.keypoint_train_images) if args.keypoint_train_images > 0 else n_train
+    est = n_kp_train * kp.epochs * SECONDS_PER_IMAGE_EPOCH["yolo"] if device == "cpu" else None
     with timer.stage("keypoints", est):
-        kpr = train_keypoints.train(dataset_dir / "keypoints" / "data.yaml", work, kp, img_px)
+        kpr = train_keypoints.train(kp_yaml, work, kp, img_px)
     if (kpr.run_dir / "results.csv").exists():
         plots.keypoint_curves(kpr.run_dir / "results.csv", f"{name}: keypoint model (YOLOv8n-pose)",
                               partial / "figures" / "keypoint_curves.png")

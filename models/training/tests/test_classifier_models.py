@@ -20,3 +20,8 @@ def test_unknown_architecture_is_named_in_the_error():
 def test_normalize_maps_the_three_grey_levels_to_minus_one_zero_one():
     x = classifier_models.normalize(torch.tensor([0, 128, 255], dtype=torch.uint8))
     assert torch.allclose(x, torch.tensor([-1.0, 0.0039, 1.0]), atol=1e-3)
+
+
+def test_compact_refuses_an_image_side_it_cannot_grid():
+    with pytest.raises(ValueError, match="multiple of 32"):
+        classifier_models.build("compact", 2, input_px=150)
