@@ -12,6 +12,7 @@
 #include "cli_args.h"
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/statistics.h"
 #include "mrpt_krp_plugin/inference/keypoint_detector.h"
 #include "mrpt_krp_plugin/inference/zone_classifier.h"
 
@@ -37,6 +38,8 @@ json detectionsJson(const std::vector<krp::PoseDetection>& dets) {
   return out;
 }
 
+constexpr double kP90 = 0.9;
+
 // Median and 90th percentile of `runs` timed calls, after `warmup` untimed ones.
 template <typename F>
 json timeCalls(F&& call, int runs, int warmup) {
@@ -47,8 +50,7 @@ json timeCalls(F&& call, int runs, int warmup) {
     call();
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
-  std::sort(ms.begin(), ms.end());
-  return {{"runs", runs}, {"median_ms", ms[ms.size() / 2]}, {"p90_ms", ms[(ms.size() * 9) / 10]}};
+  return {{"runs", runs}, {"median_ms", krp::median(ms)}, {"p90_ms", krp::quantile(ms, kP90)}};
 }
 
 }  // namespace

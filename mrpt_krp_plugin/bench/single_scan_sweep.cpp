@@ -13,6 +13,7 @@
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/png_file.h"
 #include "mrpt_krp_plugin/common/progress_bar.h"
+#include "mrpt_krp_plugin/common/statistics.h"
 #include "mrpt_krp_plugin/map/grid_image.h"
 
 namespace krp {
@@ -22,12 +23,6 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr double kP95 = 0.95;
 // Drawing: dots this large stand for one scan, whatever the map's resolution [m].
 constexpr double kDotRadiusM = 0.25;
-
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[static_cast<std::size_t>(std::min<double>(v.size() - 1, std::floor(q * static_cast<double>(v.size() - 1) + 0.5)))];
-}
 
 }  // namespace
 
@@ -84,11 +79,10 @@ SingleScanSummary summarizeSweep(const std::vector<SingleScanRecord>& records) {
     if (r.error_xy_m >= 0) errors_xy.push_back(r.error_xy_m), errors_phi.push_back(r.error_phi_deg);
   }
   if (!errors_xy.empty()) {
-    s.median_error_xy_m = quantile(errors_xy, 0.5);
-    s.median_error_phi_deg = quantile(errors_phi, 0.5);
+    s.median_error_xy_m = median(errors_xy);
+    s.median_error_phi_deg = median(errors_phi);
   }
-  s.median_ms = quantile(times, 0.5);
-  s.p95_ms = quantile(times, kP95);
+  if (!times.empty()) s.median_ms = median(times), s.p95_ms = quantile(times, kP95);
   return s;
 }
 

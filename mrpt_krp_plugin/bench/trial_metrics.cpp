@@ -77,11 +77,4 @@ KidnapOutcome evaluateKidnap(const std::vector<UpdateRecord>& u, std::size_t kid
   return k;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 }  // namespace krp

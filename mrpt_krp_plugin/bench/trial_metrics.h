@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "mrpt_krp_plugin/common/statistics.h"
+
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
 
 namespace krp {
@@ -64,8 +66,5 @@ struct KidnapOutcome {
 /// Throws std::invalid_argument for a kidnap step outside 1 .. updates-1.
 KidnapOutcome evaluateKidnap(const std::vector<UpdateRecord>& updates, std::size_t kidnap_step,
                              const ConvergenceCriteria& criteria);
-
-/// Median of values (NaN for none).
-double median(std::vector<double> values);
 
 }  // namespace krp

@@ -96,11 +96,6 @@ TEST(TrialMetrics, KidnapDetectionAndRecoveryCountFromTheKidnap) {
   EXPECT_THROW(evaluateKidnap(u, u.size(), {}), std::invalid_argument);
 }
 
-TEST(TrialMetrics, Median) {
-  EXPECT_NEAR(median({3, 1, 2}), 2.0, 1e-12);
-  EXPECT_NEAR(median({4, 1, 2, 3}), 2.5, 1e-12);
-  EXPECT_TRUE(std::isnan(median({})));
-}
 
 TEST(BenchSummary, KidnapRatesAreOverTrialsThatWereTracking) {
   auto trial = [](bool tracking, int detect, bool recovered, int recover) {
