@@ -15,6 +15,7 @@
 #include "mrpt_krp_plugin/bench/trial_metrics.h"
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/statistics.h"
 #include "mrpt_krp_plugin/logs/carmen_log.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/relocalize/relocalization_output.h"

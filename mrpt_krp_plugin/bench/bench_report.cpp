@@ -15,6 +15,7 @@
 #include "mrpt_krp_plugin/bench/report_format.h"
 #include "mrpt_krp_plugin/bench/scaling_report.h"
 #include "mrpt_krp_plugin/common/atomic_file.h"
+#include "mrpt_krp_plugin/common/statistics.h"
 
 namespace krp {
 namespace {

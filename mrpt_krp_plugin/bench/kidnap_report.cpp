@@ -6,6 +6,7 @@
 
 #include "mrpt_krp_plugin/bench/record_groups.h"
 #include "mrpt_krp_plugin/bench/report_format.h"
+#include "mrpt_krp_plugin/common/statistics.h"
 
 namespace krp {
 namespace {

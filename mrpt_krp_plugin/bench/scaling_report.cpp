@@ -10,6 +10,7 @@
 #include "mrpt_krp_plugin/bench/line_plot.h"
 #include "mrpt_krp_plugin/bench/record_groups.h"
 #include "mrpt_krp_plugin/bench/report_format.h"
+#include "mrpt_krp_plugin/common/statistics.h"
 
 namespace krp {
 

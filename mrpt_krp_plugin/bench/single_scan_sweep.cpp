@@ -82,7 +82,10 @@ SingleScanSummary summarizeSweep(const std::vector<SingleScanRecord>& records) {
     s.median_error_xy_m = median(errors_xy);
     s.median_error_phi_deg = median(errors_phi);
   }
-  if (!times.empty()) s.median_ms = median(times), s.p95_ms = quantile(times, kP95);
+  if (!times.empty()) {
+    s.median_ms = median(times);
+    s.p95_ms = quantile(times, kP95);
+  }
   return s;
 }
 

@@ -5,8 +5,6 @@
 #include <string>
 #include <vector>
 
-#include "mrpt_krp_plugin/common/statistics.h"
-
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
 
 namespace krp {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/sim/world_builders.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "mrpt_krp_plugin/common/input_error.h"
@@ -45,11 +46,12 @@ std::vector<double> roomRow(FloorPlan& plan, Rng& rng, double x_start, double x_
 
 // The wall nearest to `target_x`, so that a zone boundary runs along it instead of through a room
 // (a room cut in two shows the classifier the same walls under two zone names).
+// With no wall to follow, the boundary stays at `target_x`.
 double nearestWall(const std::vector<double>& walls, double target_x) {
-  double best = target_x;
-  for (double x : walls)
-    if (best == target_x || std::abs(x - target_x) < std::abs(best - target_x)) best = x;
-  return best;
+  if (walls.empty()) return target_x;
+  return *std::min_element(walls.begin(), walls.end(), [target_x](double a, double b) {
+    return std::abs(a - target_x) < std::abs(b - target_x);
+  });
 }
 }  // namespace
 

@@ -21,7 +21,7 @@ from .image_folders import read_split
 from .train_map import DEFAULT_BIN_DIR, REPO_ROOT
 
 
-def _dataset(bin_dir: Path, world: str, strength: float, per_zone: int, seed: int, out: Path,
+def make_dataset(bin_dir: Path, world: str, strength: float, per_zone: int, seed: int, out: Path,
              orientation: str = "wall_axes") -> Path:
     subprocess.run([str(bin_dir / "krp-dataset"), "--world", world, "--world-dir", str(REPO_ROOT / "sim_worlds"),
                     "--out", str(out), "--samples-per-zone", str(per_zone), "--changed-per-zone",
@@ -88,7 +88,7 @@ def main(argv=None) -> int:
     runs, eval_sets, zones = [], None, None
     with tempfile.TemporaryDirectory() as tmp:
         for strength in (1.0, 0.0):
-            d = _dataset(args.bin_dir, args.world, strength, args.samples_per_zone, args.seed,
+            d = make_dataset(args.bin_dir, args.world, strength, args.samples_per_zone, args.seed,
                          Path(tmp) / f"strength{strength}")
             card = json.loads((d / "dataset_card.json").read_text())
             zones = card["zones"]

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from . import train_classifier
 from .augment import AugmentParams, max_rotation_deg
-from .compare import _dataset
+from .compare import make_dataset
 from .image_folders import read_split
 from .train_map import DEFAULT_BIN_DIR
 
@@ -49,7 +49,7 @@ def main(argv=None) -> int:
     runs = []
     with tempfile.TemporaryDirectory() as tmp:
         for orientation in ORIENTATIONS:
-            d = _dataset(args.bin_dir, args.world, 1.0, args.samples_per_zone, args.seed, Path(tmp) / orientation,
+            d = make_dataset(args.bin_dir, args.world, 1.0, args.samples_per_zone, args.seed, Path(tmp) / orientation,
                          orientation)
             card = json.loads((d / "dataset_card.json").read_text())
             sets = {s: read_split(d, s, card["zones"]) for s in ("train",) + EVAL_SPLITS}

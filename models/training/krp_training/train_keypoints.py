@@ -71,9 +71,10 @@ def _progress_bar(total_epochs: int):
     return {"on_train_start": on_train_start, "on_train_epoch_end": on_train_epoch_end, "on_train_end": on_train_end}
 
 
-def limit_training_images(data_yaml: Path, work_dir: Path, max_images: int, seed: int) -> Path:
-    """A copy of krp-dataset's data.yaml whose training split is at most `max_images` images,
-    drawn with `seed`; the yaml itself when the split is no larger.
+def limit_training_images(data_yaml: Path, work_dir: Path, max_images: int, seed: int) -> tuple:
+    """(data yaml, training images in it): a copy of krp-dataset's data.yaml whose training split
+    is at most `max_images` images drawn with `seed`, or the yaml itself when the split is no
+    larger or `max_images` is 0.
 
     The classifier learns from every image, but a YOLO epoch on a CPU costs about 0.05 s per image
     (train_map.SECONDS_PER_IMAGE_EPOCH):
@@ -83,14 +84,14 @@ def limit_training_images(data_yaml: Path, work_dir: Path, max_images: int, seed
     root = Path(doc["path"])
     images = sorted((root / doc["train"]).glob("*.png"))
     if max_images <= 0 or len(images) <= max_images:
-        return Path(data_yaml)
+        return Path(data_yaml), len(images)
     chosen = sorted(random.Random(seed).sample(images, max_images))
     listing = Path(work_dir) / "keypoint_train_images.txt"
     listing.write_text("".join(f"{p.resolve()}\n" for p in chosen))
     doc["train"] = str(listing.resolve())
     limited = Path(work_dir) / "keypoints_data.yaml"
     limited.write_text(yaml.safe_dump(doc, sort_keys=False))
-    return limited
+    return limited, max_images
 
 
 def train(data_yaml: Path, work_dir: Path, params: KeypointParams, imgsz: int) -> KeypointResult:

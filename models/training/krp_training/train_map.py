@@ -153,9 +153,8 @@ def main(argv=None) -> int:
     kp = train_keypoints.KeypointParams(epochs=args.keypoint_epochs, seed=args.seed, rotation_deg=rotation,
                                         device="0" if device == "cuda" else "cpu")
     img_px = int(card["submap"]["size_px"])
-    kp_yaml = train_keypoints.limit_training_images(dataset_dir / "keypoints" / "data.yaml", work,
-                                                    args.keypoint_train_images, args.seed)
-    n_kp_train = min(n_train, args.keypoint_train_images) if args.keypoint_train_images > 0 else n_train
+    kp_yaml, n_kp_train = train_keypoints.limit_training_images(dataset_dir / "keypoints" / "data.yaml", work,
+                                                                args.keypoint_train_images, args.seed)
     est = n_kp_train * kp.epochs * SECONDS_PER_IMAGE_EPOCH["yolo"] if device == "cpu" else None
     with timer.stage("keypoints", est):
         kpr = train_keypoints.train(kp_yaml, work, kp, img_px)
