@@ -44,13 +44,13 @@ std::vector<double> roomRow(FloorPlan& plan, Rng& rng, double x_start, double x_
   return room_walls;
 }
 
-// The wall nearest to `target_x`, so that a zone boundary runs along it instead of through a room
-// (a room cut in two shows the classifier the same walls under two zone names).
-// With no wall to follow, the boundary stays at `target_x`.
-double nearestWall(const std::vector<double>& walls, double target_x) {
-  if (walls.empty()) return target_x;
-  return *std::min_element(walls.begin(), walls.end(), [target_x](double a, double b) {
-    return std::abs(a - target_x) < std::abs(b - target_x);
+// The line (a wall, an aisle's centre) nearest to `target`, so that a zone boundary runs along the
+// building's structure instead of through a room or a rack (a room cut in two shows the classifier
+// the same walls under two zone names). With no line to follow, the boundary stays at `target`.
+double nearestLine(const std::vector<double>& lines, double target) {
+  if (lines.empty()) return target;
+  return *std::min_element(lines.begin(), lines.end(), [target](double a, double b) {
+    return std::abs(a - target) < std::abs(b - target);
   });
 }
 }  // namespace
@@ -75,7 +75,7 @@ BuiltWorld buildOfficeTwoZone(uint64_t seed) {
   BuiltWorld out{"office_two_zone", plan.toGrid(), {}};
   // The wings meet at the room walls nearest the middle; the corridor, with no wall to follow,
   // is split at the middle.
-  const double mid = x0 + w / 2, north = nearestWall(north_walls, mid), south = nearestWall(south_walls, mid);
+  const double mid = x0 + w / 2, north = nearestLine(north_walls, mid), south = nearestLine(south_walls, mid);
   const double r = kWorldResolutionM / 2, W = w + 2 * kMargin, H = h + 2 * kMargin;
   // Corners half a cell inside each zone, as in rectangleZone, so the two polygons never claim
   // the same cell; a step's half-cell goes to the side of whichever zone lies beyond it.
@@ -97,12 +97,16 @@ BuiltWorld buildWarehouse(uint64_t seed) {
   FloorPlan plan(w + 2 * kMargin, h + 2 * kMargin, kWorldResolutionM);
   const double x0 = kMargin, y0 = kMargin;
   plan.building(x0, y0, x0 + w, y0 + h);
-  // Two blocks of identical racks: 1.1 m deep, 3.0 m aisles, a 6 m cross aisle between.
-  constexpr double kRackDepth = 1.1, kAislePitch = 4.1, kRackLength = 24.0;
-  for (double bx : {x0 + 4.0, x0 + 36.0})
-    for (int row = 0; row < 9; ++row) {
-      const double ry = y0 + 4.0 + row * kAislePitch;
+  // Two blocks of identical racks: 1.1 m deep, 3.0 m aisles, an 8 m cross aisle between.
+  constexpr double kRackDepth = 1.1, kAislePitch = 4.1, kRackLength = 24.0, kFirstRackY = 4.0;
+  constexpr int kRackRows = 9;
+  const double block_x[] = {x0 + 4.0, x0 + 36.0};
+  std::vector<double> aisle_centres;
+  for (double bx : block_x)
+    for (int row = 0; row < kRackRows; ++row) {
+      const double ry = y0 + kFirstRackY + row * kAislePitch;
       plan.solid(bx, ry, bx + kRackLength, ry + kRackDepth);
+      if (bx == block_x[0] && row + 1 < kRackRows) aisle_centres.push_back(ry + (kRackDepth + kAislePitch) / 2);
     }
   // Building columns on a regular 8 m grid in the open areas (repetitive, as in real halls).
   for (double cx = x0 + 2.0; cx < x0 + w; cx += 8.0) {
@@ -114,12 +118,17 @@ BuiltWorld buildWarehouse(uint64_t seed) {
   plan.wall(x0 + w + 0.8, y0 + 10.0, x0 + w + 0.8, y0 + 14.0);
   plan.solid(x0 + 0.1, y0 + h - 5.0, x0 + 2.5 + rng.uniform(0.0, 0.5), y0 + h - 0.1);
   BuiltWorld out{"warehouse", plan.toGrid(), {}};
+  // Quadrants that follow the racks: west and east meet in the middle of the cross aisle, south
+  // and north along the aisle nearest the middle, so no rack is cut in two (a rack split between
+  // two zones shows the classifier the same aisle under two names).
   const double W = w + 2 * kMargin, H = h + 2 * kMargin;
-  int k = 0;
+  const double x_split = (block_x[0] + kRackLength + block_x[1]) / 2;
+  const double y_split = nearestLine(aisle_centres, H / 2);
+  const double xs[] = {0.0, x_split, W}, ys[] = {0.0, y_split, H};
+  const char* names[2][2] = {{"south_west", "south_east"}, {"north_west", "north_east"}};
   for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 4; ++i)
-      out.zones.push_back(rectangleZone("bay_" + std::to_string(k++), i * W / 4, j * H / 2, (i + 1) * W / 4,
-                                        (j + 1) * H / 2, kWorldResolutionM));
+    for (int i = 0; i < 2; ++i)
+      out.zones.push_back(rectangleZone(names[j][i], xs[i], ys[j], xs[i + 1], ys[j + 1], kWorldResolutionM));
   return out;
 }
 

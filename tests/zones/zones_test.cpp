@@ -145,6 +145,27 @@ TEST(WorldBuilders, OfficeWingsMeetOnlyInTheCorridor) {
   EXPECT_LE(crossings, corridor_width_m / kWorldResolutionM);
 }
 
+// The warehouse's quadrants meet in the cross aisle and in an aisle between two rack rows: no rack
+// is cut in two, so the only obstacles a boundary crosses are the four building walls.
+TEST(WorldBuilders, WarehouseQuadrantsCutNoRack) {
+  const auto world = buildWarehouse(1);
+  EXPECT_TRUE(findZoneProblems(world.map, world.zones).empty());
+  EXPECT_EQ(world.zones.size(), 4u);
+  const cv::Mat occupied = occupiedMask(world.map), labels = rasterizeZones(world.map, world.zones);
+  int crossings = 0;
+  for (int r = 0; r + 1 < occupied.rows; ++r)
+    for (int c = 0; c + 1 < occupied.cols; ++c) {
+      if (!occupied.at<uint8_t>(r, c)) continue;
+      const int zone = labels.at<int>(r, c);
+      if (occupied.at<uint8_t>(r, c + 1) && labels.at<int>(r, c + 1) != zone) ++crossings;
+      if (occupied.at<uint8_t>(r + 1, c) && labels.at<int>(r + 1, c) != zone) ++crossings;
+    }
+  // A building wall is a few cells thick; one rack cut across its 1.1 m depth alone would add 22.
+  const int building_walls_crossed = 4, cells_per_wall_allowed = 5;
+  EXPECT_GT(crossings, 0);
+  EXPECT_LE(crossings, building_walls_crossed * cells_per_wall_allowed);
+}
+
 TEST(ZoneDrawing, WritesAPngOfTheMapSize) {
   const auto dir = test::tempDir("zones_png");
   const auto world = buildOfficeTwoZone(1);
