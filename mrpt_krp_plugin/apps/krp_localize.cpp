@@ -20,6 +20,7 @@
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/relocalize/relocalization_output.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
+#include "mrpt_krp_plugin/zones/zones_yaml.h"
 #ifdef KRP_WITH_ROS1
 #include "bag_reader.h"
 #endif
@@ -34,7 +35,7 @@ constexpr char kSection[] = "localize";
 const std::set<std::string> kIniKeys = {"map", "rawlog", "bag", "carmen", "carmen_fov_deg", "truth_from_log", "scan_topic",
                                         "odom_frame", "base_frame", "method", "ground_truth", "out_dir", "seed",
                                         "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min",
-                                        "models", "single_scan", "single_scan_stride", "top_zones", "seeded_uniform_fraction"};
+                                        "models", "zones", "single_scan", "single_scan_stride", "top_zones", "seeded_uniform_fraction"};
 
 std::string flagName(std::string key) {
   for (auto& c : key) if (c == '_') c = '-';
@@ -60,7 +61,7 @@ std::map<std::string, std::string> mergeSettings(const CliArgs& args) {
     if (!args.has(flagName(k))) s[k] = cfg.read_string(kSection, k, "");
   }
   // Relative paths in the INI are relative to the INI's folder.
-  for (const char* k : {"map", "rawlog", "bag", "carmen", "ground_truth", "out_dir", "models"})
+  for (const char* k : {"map", "rawlog", "bag", "carmen", "ground_truth", "out_dir", "models", "zones"})
     if (!args.has(flagName(k)) && !s[k].empty() && fs::path(s[k]).is_relative() && keys.end() != std::find(keys.begin(), keys.end(), k))
       s[k] = (fs::path(ini).parent_path() / s[k]).string();
   return s;
@@ -196,8 +197,11 @@ static int run(int argc, char** argv) {
                 {"scan-topic", "TOPIC", "--bag: the LaserScan topic", "/scan"},
                 {"odom-frame", "FRAME", "--bag: odometry frame", "odom"},
                 {"base-frame", "FRAME", "--bag: robot frame", "base_link"},
-                {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform or global-matcher", "amcl-kld"},
+                {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform, seeded-keypoints-only "
+                 "or global-matcher", "amcl-kld"},
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
+                {"zones", "FILE", "seeded / single scan: the zones.yaml the models were trained on; when the keypoints "
+                 "give no credible pose, the classifier's most likely zone is searched by the correlative matcher", ""},
                 {"single-scan", "STEP|all", "relocalize from this step's scan only: print the hypotheses, write "
                  "hypotheses.json and hypotheses.png; 'all': every scan on its own, written as single_scan.csv/.png "
                  "with counts against the ground truth (-1 = run the filter). Uses --models, or the global matcher "
@@ -239,7 +243,10 @@ static int run(int argc, char** argv) {
   if (krp::methodNeedsModels(s["method"]) || (single_scan_mode && !use_matcher)) {
     if (s["models"].empty())
       throw krp::InputError("--models", "required by method '" + s["method"] + "' and by --single-scan unless --method global-matcher");
-    relocalizer = std::make_shared<krp::Relocalizer>(s["models"], *map.grid, ms.relocalizer);
+    const bool zone_search = !s["zones"].empty() && !krp::methodNeedsKeypointsOnly(s["method"]);
+    relocalizer = zone_search ? std::make_shared<krp::Relocalizer>(s["models"], *map.grid, ms.relocalizer,
+                                                                   krp::readZonesYaml(s["zones"]))
+                              : std::make_shared<krp::Relocalizer>(s["models"], *map.grid, ms.relocalizer);
   }
   std::vector<mrpt::math::TPose2D> truth;
   const auto steps = readSteps(s, &truth);
@@ -253,7 +260,7 @@ static int run(int argc, char** argv) {
       throw krp::InputError(s["ground_truth"], std::to_string(truth.size()) + " poses for " + std::to_string(steps.size()) +
                                                    " steps");
   }
-  krp::MethodResources resources{relocalizer, nullptr};
+  krp::MethodResources resources{relocalizer, nullptr, relocalizer};
   if (krp::methodNeedsMatcher(s["method"]) || (single_scan_mode && use_matcher))
     resources.matcher = std::make_shared<krp::MatcherRelocalizer>(*map.grid, ms.matcher);
   const std::string input = !s["bag"].empty() ? s["bag"] : !s["carmen"].empty() ? s["carmen"] : s["rawlog"];

@@ -13,6 +13,7 @@
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 #include "mrpt_krp_plugin/sim/world.h"
+#include "mrpt_krp_plugin/zones/zones_yaml.h"
 
 namespace krp {
 namespace {
@@ -44,11 +45,12 @@ Trial generateKidnapTrial(const mrpt::maps::COccupancyGridMap2D& map, const Lida
 
 std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
   const auto known = methodNames();
-  bool need_models = false, need_matcher = false;
+  bool need_models = false, need_matcher = false, keypoints_only = false;
   for (const auto& m : cfg.methods) {  // fail early on a bad name
     if (std::find(known.begin(), known.end(), m) == known.end()) makeInitializer(m, cfg.method_settings);
     need_models = need_models || methodNeedsModels(m);
     need_matcher = need_matcher || methodNeedsMatcher(m);
+    keypoints_only = keypoints_only || methodNeedsKeypointsOnly(m);
   }
   struct Job {
     World world;
@@ -65,8 +67,11 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     MethodResources res;
     if (need_models) {
       const auto models = (std::filesystem::path(cfg.method_settings.models_root) / w.name).string();
-      res.relocalizer = std::make_shared<Relocalizer>(models, *map, cfg.method_settings.relocalizer);
-      log << "krp-bench: " << w.name << ": models " << models << " (lidar " << res.relocalizer->manifest().lidar_name << ")\n";
+      const auto& rp = cfg.method_settings.relocalizer;
+      res.relocalizer = std::make_shared<Relocalizer>(models, *map, rp, readZonesYaml(w.zones_path));
+      if (keypoints_only) res.keypoints_only_relocalizer = std::make_shared<Relocalizer>(models, *map, rp);
+      log << "krp-bench: " << w.name << ": models " << models << " (lidar " << res.relocalizer->manifest().lidar_name
+          << "; zone search " << (res.relocalizer->hasZoneSearch() ? "on" : "off") << ")\n";
     }
     if (need_matcher) res.matcher = std::make_shared<MatcherRelocalizer>(*map, cfg.method_settings.matcher);
     for (size_t li = 0; li < lidars.size(); ++li) jobs.push_back({w, map, w.lidar(lidars[li]), wi, li, res});

@@ -6,10 +6,14 @@
 namespace krp {
 
 std::vector<std::string> methodNames() {
-  return {"uniform-mcl", "amcl-kld", "amcl-kld-50k", "seeded", "seeded-no-uniform", "global-matcher"};
+  return {"uniform-mcl", "amcl-kld", "amcl-kld-50k", "seeded", "seeded-no-uniform", "seeded-keypoints-only",
+          "global-matcher"};
 }
 
-bool methodNeedsModels(const std::string& name) { return name == "seeded" || name == "seeded-no-uniform"; }
+bool methodNeedsKeypointsOnly(const std::string& name) { return name == "seeded-keypoints-only"; }
+bool methodNeedsModels(const std::string& name) {
+  return name == "seeded" || name == "seeded-no-uniform" || methodNeedsKeypointsOnly(name);
+}
 bool methodNeedsMatcher(const std::string& name) { return name == "global-matcher"; }
 
 std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& s,
@@ -24,7 +28,7 @@ std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, co
   SeededInitParams seeded = s.seeded;
   seeded.fallback = s.uniform;
   if (methodNeedsModels(name)) {
-    const auto relocalizer = resources.relocalizer;
+    const auto relocalizer = methodNeedsKeypointsOnly(name) ? resources.keypoints_only_relocalizer : resources.relocalizer;
     if (!relocalizer) throw InputError("method '" + name + "'", "needs trained models (a models folder with manifest.json)");
     if (name == "seeded-no-uniform") seeded.uniform_fraction = 0.0;
     return std::make_shared<SeededInitializer>(

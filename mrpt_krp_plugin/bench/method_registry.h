@@ -25,19 +25,24 @@ struct MethodSettings {
   MatcherRelocalizerParams matcher;
 };
 
-/// What some methods need built once per map: the learned relocalizer (seeded methods) and the
-/// global correlative matcher (`global-matcher`).
+/// What some methods need built once per map: the learned relocalizer (seeded methods; with the
+/// zones' outlines, so with its zone search), the same without zone search
+/// (`seeded-keypoints-only`) and the global correlative matcher (`global-matcher`).
 struct MethodResources {
   std::shared_ptr<const Relocalizer> relocalizer;
   std::shared_ptr<const MatcherRelocalizer> matcher;
+  std::shared_ptr<const Relocalizer> keypoints_only_relocalizer;
 };
 
 /// The method names: `uniform-mcl`, `amcl-kld`, `amcl-kld-50k`, `seeded`, `seeded-no-uniform`,
-/// `global-matcher`.
+/// `seeded-keypoints-only` (what the two models and the verification achieve on their own, with
+/// no zone search), `global-matcher`.
 std::vector<std::string> methodNames();
 
 /// Whether the method needs trained models (a Relocalizer).
 bool methodNeedsModels(const std::string& name);
+/// Whether it needs the relocalizer without zone search (MethodResources::keypoints_only_relocalizer).
+bool methodNeedsKeypointsOnly(const std::string& name);
 /// Whether the method needs the global matcher.
 bool methodNeedsMatcher(const std::string& name);
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 
 #include "mrpt_krp_plugin/submap/scan_beams.h"
 
@@ -76,8 +77,32 @@ double CorrelativeMatcher::bound(const Rotation& r, int cx, int cy, int level) c
   return sum / static_cast<double>(r.offsets.size());
 }
 
-std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservation2DRangeScan& scan) const {
+cv::Mat CorrelativeMatcher::regionOf(const std::vector<Zone>& zones) const {
+  cv::Mat region = cv::Mat::zeros(free_.size(), CV_8U);
+  const double res = params_.resolution_m;
+  for (const auto& z : zones) {
+    std::vector<cv::Point> outline;
+    for (const auto& p : z.polygon)
+      outline.emplace_back(static_cast<int>(std::floor((p.x - x_min_) / res)), static_cast<int>(std::floor((p.y - y_min_) / res)));
+    cv::fillPoly(region, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(1));
+  }
+  return region;
+}
+
+std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                     const cv::Mat& region) const {
   nodes_scored_ = 0;
+  if (!region.empty() && (region.size() != free_.size() || region.type() != CV_8U))
+    throw std::invalid_argument("CorrelativeMatcher::match: region not made by regionOf() for this map");
+  // Region cells summed over any node's window in O(1): a node with none is never scored.
+  cv::Mat region_sum;
+  if (!region.empty()) cv::integral(region, region_sum, CV_32S);
+  auto inRegion = [&](int cx, int cy, int level) {
+    if (region.empty()) return true;
+    const int x1 = std::min(cx + (1 << level), region.cols), y1 = std::min(cy + (1 << level), region.rows);
+    return region_sum.at<int>(y1, x1) - region_sum.at<int>(cy, x1) - region_sum.at<int>(y1, cx) +
+               region_sum.at<int>(cy, cx) > 0;
+  };
   const auto beams = scanBeams(scan);
   std::vector<mrpt::math::TPoint2D> points;  // robot frame
   const mrpt::poses::CPose2D sensor(scan.sensorPose);
@@ -118,13 +143,16 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
     for (const auto& rot : rotations) {
       std::vector<Node> roots;
       for (int cy = 0; cy < free_.rows; cy += step)
-        for (int cx = 0; cx < free_.cols; cx += step) roots.push_back({cx, cy, top, bound(rot, cx, cy, top)});
+        for (int cx = 0; cx < free_.cols; cx += step)
+          if (inRegion(cx, cy, top)) roots.push_back({cx, cy, top, bound(rot, cx, cy, top)});
       std::sort(roots.begin(), roots.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
       // Depth-first, best child first; a node whose bound cannot beat the best is pruned.
       std::function<void(const Node&)> visit = [&](const Node& n) {
         if (n.bound <= best.score) return;
         if (n.level == 0) {
-          if (n.cx >= free_.cols || n.cy >= free_.rows || !robotCellFree(n.cx, n.cy) || excluded(n.cx, n.cy)) return;
+          if (n.cx >= free_.cols || n.cy >= free_.rows || !robotCellFree(n.cx, n.cy) || !inRegion(n.cx, n.cy, 0) ||
+              excluded(n.cx, n.cy))
+            return;
           best = {{x_min_ + (n.cx + 0.5) * res, y_min_ + (n.cy + 0.5) * res, rot.phi}, n.bound};
           found = true;
           return;
@@ -133,7 +161,7 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
         std::vector<Node> children;
         for (int dy : {0, half})
           for (int dx : {0, half})
-            if (n.cx + dx < free_.cols && n.cy + dy < free_.rows)
+            if (n.cx + dx < free_.cols && n.cy + dy < free_.rows && inRegion(n.cx + dx, n.cy + dy, n.level - 1))
               children.push_back({n.cx + dx, n.cy + dy, n.level - 1, bound(rot, n.cx + dx, n.cy + dy, n.level - 1)});
         std::sort(children.begin(), children.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
         for (const auto& c : children) visit(c);

@@ -8,6 +8,8 @@
 
 #include <vector>
 
+#include "mrpt_krp_plugin/zones/zone.h"
+
 namespace krp {
 
 struct CorrelativeMatcherParams {
@@ -36,8 +38,12 @@ class CorrelativeMatcher {
  public:
   CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& map, CorrelativeMatcherParams params = {});
 
-  /// Best first; empty when nothing scores min_score.
-  std::vector<MatchSolution> match(const mrpt::obs::CObservation2DRangeScan& scan) const;
+  /// The search grid's cells inside any of `zones` (CV_8U, 1 = searched): a region for match().
+  cv::Mat regionOf(const std::vector<Zone>& zones) const;
+
+  /// Best first; empty when nothing scores min_score. With a `region` from regionOf(), only poses
+  /// inside it are considered, and whole branches outside it are skipped unscored.
+  std::vector<MatchSolution> match(const mrpt::obs::CObservation2DRangeScan& scan, const cv::Mat& region = cv::Mat()) const;
 
   /// Nodes whose bound was computed in the last match() (a measure of its cost).
   long long lastNodesScored() const { return nodes_scored_; }

@@ -14,6 +14,10 @@ struct MatcherRelocalizerParams {
   PoseVerifierParams verifier;
 };
 
+/// A matcher solution as a hypothesis: its covariance is the search grid's quantization, half a
+/// cell and half a heading step as standard deviations.
+PoseHypothesis hypothesisFromMatch(const MatchSolution& solution, const CorrelativeMatcherParams& params);
+
 /// The `global-matcher` baseline: the correlative matcher's solutions, verified and ranked
 /// exactly as the learned relocalizer's hypotheses are, so the two differ only in where the
 /// candidates come from.

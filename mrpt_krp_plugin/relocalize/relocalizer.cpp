@@ -6,9 +6,11 @@
 #include <cmath>
 #include <iterator>
 #include <numeric>
+#include <opencv2/core.hpp>
 #include <sstream>
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/relocalize/matcher_relocalizer.h"
 #include "mrpt_krp_plugin/submap/occupancy_image.h"
 #include "mrpt_krp_plugin/submap/sdt_image.h"
 #include "mrpt_krp_plugin/submap/submap_builder.h"
@@ -59,6 +61,36 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
       verifier_(map, params.verifier) {
   requireTrainingMapResolution(manifest_, map, params.map_resolution_tolerance_m);
   requireLandmarksInsideMap(manifest_, map);
+}
+
+Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
+                         RelocalizerParams params, const std::vector<Zone>& zones)
+    : Relocalizer(models_dir, map, params) {
+  if (!params_.zone_search.enabled) return;
+  zone_matcher_.emplace(map, params_.zone_search.matcher);
+  for (const auto& name : manifest_.zones) {
+    const auto it = std::find_if(zones.begin(), zones.end(), [&](const Zone& z) { return z.name == name; });
+    if (it == zones.end())
+      throw InputError("zones", "no zone named '" + name + "', which the models in " + manifest_.folder +
+                                    " were trained on: give the zones.yaml of their world '" + manifest_.world + "'");
+    zone_regions_.push_back(zone_matcher_->regionOf({*it}));
+  }
+}
+
+std::vector<PoseHypothesis> Relocalizer::zoneSearch(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                    const std::vector<float>& zone_probabilities) const {
+  std::vector<PoseHypothesis> found;
+  const auto zones = topZones(zone_probabilities, params_.zone_search.zones);
+  if (zones.empty()) return found;
+  cv::Mat region = zone_regions_[zones.front()].clone();
+  for (size_t i = 1; i < zones.size(); ++i) cv::bitwise_or(region, zone_regions_[zones[i]], region);
+  for (const auto& s : zone_matcher_->match(scan, region)) {
+    PoseHypothesis h = hypothesisFromMatch(s, params_.zone_search.matcher);
+    h.zone = zones.front();
+    h.zone_probability = zone_probabilities[zones.front()];
+    found.push_back(h);
+  }
+  return found;
 }
 
 void Relocalizer::requireTrainingLidar(const mrpt::obs::CObservation2DRangeScan& scan) const {
@@ -135,8 +167,21 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
   r.candidates = static_cast<int>(candidates.size());
 
   t = Clock::now();
+  // Kept for a second verification beside the zone search's poses, so that both compete.
+  std::vector<PoseHypothesis> keypoint_candidates;
+  if (zone_matcher_) keypoint_candidates = candidates;
   r.ranking = verifier_.verify(scan, std::move(candidates));
   r.times.verification_ms = msSince(t);
+
+  if (!r.ranking.localized && zone_matcher_) {
+    t = Clock::now();
+    auto found = zoneSearch(scan, r.zone_probabilities);
+    r.zone_search_used = true;
+    r.zone_search_candidates = static_cast<int>(found.size());
+    keypoint_candidates.insert(keypoint_candidates.end(), found.begin(), found.end());
+    r.ranking = verifier_.verify(scan, std::move(keypoint_candidates));
+    r.times.zone_search_ms = msSince(t);
+  }
   r.times.total_ms = msSince(start);
   return r;
 }

@@ -5,16 +5,29 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "mrpt_krp_plugin/inference/keypoint_detector.h"
 #include "mrpt_krp_plugin/inference/model_manifest.h"
 #include "mrpt_krp_plugin/inference/zone_classifier.h"
+#include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
 #include "mrpt_krp_plugin/relocalize/keypoint_hypotheses.h"
 #include "mrpt_krp_plugin/relocalize/pose_verifier.h"
+#include "mrpt_krp_plugin/zones/zone.h"
 
 namespace krp {
+
+/// The fallback for a scan whose keypoints give no credible pose: the correlative matcher searches
+/// the classifier's most likely zones only, a fraction of the cost of searching the whole map.
+/// Needs the zones' outlines (the Relocalizer constructor that takes zones).
+struct ZoneSearchParams {
+  bool enabled = true;
+  /// The classifier's most likely zones searched; the others stay the keypoints' business.
+  int zones = 1;
+  CorrelativeMatcherParams matcher;
+};
 
 struct RelocalizerParams {
   /// The keypoint model's detections are used for this many of the classifier's most likely
@@ -31,6 +44,7 @@ struct RelocalizerParams {
   PoseDecodeParams decode{0.1f, 0.7f, 300};
   KeypointHypothesesParams keypoints;
   PoseVerifierParams verifier;
+  ZoneSearchParams zone_search;
   OnnxRuntimeParams onnx;
   /// A scan whose field of view differs from the manifest's lidar by more than this is refused:
   /// the models never saw such submaps [deg].
@@ -43,7 +57,9 @@ struct RelocalizerParams {
 
 /// Wall-clock time of each stage of one relocalization [ms].
 struct RelocalizationTimes {
-  double submap_ms = 0, classifier_ms = 0, keypoints_ms = 0, alignment_ms = 0, verification_ms = 0, total_ms = 0;
+  double submap_ms = 0, classifier_ms = 0, keypoints_ms = 0, alignment_ms = 0, verification_ms = 0;
+  double zone_search_ms = 0;  ///< the zone search and the second verification, when they ran
+  double total_ms = 0;
 };
 
 struct RelocalizationResult {
@@ -52,18 +68,25 @@ struct RelocalizationResult {
   int turns = 1;                          ///< submap turns the classifier saw (4 for wall-aligned models)
   int detections = 0;                     ///< keypoint-model detections used
   int candidates = 0;                     ///< poses proposed by the alignment
+  bool zone_search_used = false;          ///< the keypoints gave no credible pose and the zone search ran
+  int zone_search_candidates = 0;         ///< poses it proposed
   RelocalizationTimes times;
 };
 
 /// One scan -> submap (one heading-up, or four wall-aligned turns) -> zone probabilities ->
 /// keypoints on the top zones of the top turns -> robust SE(2) alignment to the zones' landmarks
-/// -> ICP and scan-fit verification against the map.
+/// -> ICP and scan-fit verification against the map; when that leaves nothing credible and the
+/// zones' outlines are known, a correlative search of the most likely zones (ZoneSearchParams).
 class Relocalizer {
  public:
   /// Loads `<models_dir>/manifest.json` and both models. InputError when the models or the
   /// manifest cannot be used, or do not fit `map`: another cell size than the map trained on, or
-  /// landmarks outside it.
+  /// landmarks outside it. Without zones there is no zone search.
   Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map, RelocalizerParams params = {});
+  /// The same, with the outlines of the zones the models were trained on (zones.yaml), which
+  /// enables the zone search. InputError("zones", ...) when a manifest zone has no outline there.
+  Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map, RelocalizerParams params,
+              const std::vector<Zone>& zones);
 
   /// InputError("scan", ...) for a scan from a lidar the models were not trained for (field of
   /// view or range outside the tolerances of RelocalizerParams).
@@ -71,15 +94,20 @@ class Relocalizer {
 
   const ModelManifest& manifest() const { return manifest_; }
   const PoseVerifier& verifier() const { return verifier_; }
+  bool hasZoneSearch() const { return zone_matcher_.has_value(); }
 
  private:
   void requireTrainingLidar(const mrpt::obs::CObservation2DRangeScan& scan) const;
+  std::vector<PoseHypothesis> zoneSearch(const mrpt::obs::CObservation2DRangeScan& scan,
+                                         const std::vector<float>& zone_probabilities) const;
 
   RelocalizerParams params_;
   ModelManifest manifest_;
   ZoneClassifier classifier_;
   KeypointDetector detector_;
   PoseVerifier verifier_;
+  std::optional<CorrelativeMatcher> zone_matcher_;
+  std::vector<cv::Mat> zone_regions_;  ///< the matcher's search region of each zone, manifest order
 };
 
 }  // namespace krp

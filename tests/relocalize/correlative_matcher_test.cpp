@@ -4,6 +4,8 @@
 #include <mrpt/math/wrap2pi.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <tuple>
 
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
@@ -66,6 +68,30 @@ TEST(CorrelativeMatcher, ASymmetricRoomGivesTwoEqualSolutions) {
   const auto& twin = first_is_truth ? sols[1] : sols[0];
   EXPECT_NEAR(twin.pose.x, 9.0 - 3.0, 0.2);
   EXPECT_NEAR(twin.pose.y, 7.0 - 2.5, 0.2);
+}
+
+// A zone region decides between the twins: the search stays inside it and costs less.
+TEST(CorrelativeMatcher, ARegionKeepsTheSearchInsideIt) {
+  FloorPlan plan(9.0, 7.0, 0.05);
+  plan.building(0.5, 0.5, 8.5, 6.5);
+  const auto map = plan.toGrid();
+  const CorrelativeMatcher matcher(map);
+  const auto scan = scanAt(map, mrpt::poses::CPose2D(3.0, 2.5, 0.3));
+  const auto whole = matcher.match(*scan);
+  const long long whole_nodes = matcher.lastNodesScored();
+  const Zone west{"west", {{0.0, 0.0}, {4.5, 0.0}, {4.5, 7.0}, {0.0, 7.0}}};
+  const Zone east{"east", {{4.5, 0.0}, {9.0, 0.0}, {9.0, 7.0}, {4.5, 7.0}}};
+  for (const auto& [zone, expected_x, expected_y] :
+       {std::tuple{west, 3.0, 2.5}, std::tuple{east, 9.0 - 3.0, 7.0 - 2.5}}) {
+    const auto sols = matcher.match(*scan, matcher.regionOf({zone}));
+    ASSERT_FALSE(sols.empty()) << zone.name;
+    EXPECT_NEAR(sols[0].pose.x, expected_x, 0.2) << zone.name;
+    EXPECT_NEAR(sols[0].pose.y, expected_y, 0.2) << zone.name;
+    for (const auto& s : sols) EXPECT_EQ(s.pose.x < 4.5, zone.name == "west") << zone.name << " " << s.pose.x;
+    EXPECT_LT(matcher.lastNodesScored(), whole_nodes) << zone.name;
+  }
+  ASSERT_FALSE(whole.empty());
+  EXPECT_THROW(matcher.match(*scan, cv::Mat::ones(3, 3, CV_8U)), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
@@ -9,6 +12,8 @@
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
 #include "mrpt_krp_plugin/sim/trial.h"
 #include "mrpt_krp_plugin/sim/world.h"
+#include "mrpt_krp_plugin/zones/zone.h"
+#include "mrpt_krp_plugin/zones/zones_yaml.h"
 
 namespace krp {
 namespace {
@@ -48,6 +53,54 @@ TEST(Relocalizer, RefusesAMapOfAnotherCellSize) {
   coarse.setSize(map.grid->getXMin(), map.grid->getXMax(), map.grid->getYMin(), map.grid->getYMax(), 0.1f);
   const auto message = messageOf([&] { Relocalizer(kModels, coarse); });
   EXPECT_NE(message.find("trained on a map of 0.05"), std::string::npos) << message;
+}
+
+TEST(Relocalizer, RefusesZonesThatAreNotTheModels) {
+  const auto world = readWorld(kWorld);
+  const auto map = loadOccupancyMap(world.map_path);
+  auto zones = readZonesYaml(world.zones_path);
+  zones[1].name = "lobby";
+  const auto message = messageOf([&] { Relocalizer(kModels, *map.grid, {}, zones); });
+  EXPECT_NE(message.find("no zone named 'east_wing'"), std::string::npos) << message;
+  EXPECT_FALSE(Relocalizer(kModels, *map.grid).hasZoneSearch());
+  EXPECT_TRUE(Relocalizer(kModels, *map.grid, {}, readZonesYaml(world.zones_path)).hasZoneSearch());
+}
+
+// With the keypoints switched off (no zone's detections used) only the zone search can answer:
+// it runs, stays in the classifier's zone and finds the pose there.
+TEST(Relocalizer, ZoneSearchAnswersWhenTheKeypointsGiveNothing) {
+  const auto world = readWorld(kWorld);
+  const auto map = loadOccupancyMap(world.map_path);
+  RelocalizerParams params;
+  params.top_zones = 0;
+  const auto zones = readZonesYaml(world.zones_path);
+  const Relocalizer with_search(kModels, *map.grid, params, zones), without(kModels, *map.grid, params);
+  const ZoneIndex index(*map.grid, zones);
+  Rng rng(3);
+  int searched = 0, right = 0;
+  const int trials = 4;
+  for (int i = 0; i < trials; ++i) {
+    const auto trial = generateTrial(*map.grid, world.lidar("omni_12m"), TrialParams{}, 20 + i);
+    const mrpt::poses::CPose2D truth(trial.truth[0]);
+    const auto scan = ScanSimulator(lidarProfileByName("omni_12m")).simulate(*map.grid, truth, rng);
+    const auto off = without.relocalize(*scan);
+    EXPECT_EQ(off.candidates, 0);
+    EXPECT_FALSE(off.ranking.localized);
+    EXPECT_FALSE(off.zone_search_used);
+    const auto on = with_search.relocalize(*scan);
+    ASSERT_TRUE(on.zone_search_used);
+    searched += on.zone_search_candidates > 0;
+    if (on.ranking.hypotheses.empty()) continue;
+    const auto& best = on.ranking.hypotheses.front();
+    const int top_zone = static_cast<int>(std::max_element(on.zone_probabilities.begin(), on.zone_probabilities.end()) -
+                                          on.zone_probabilities.begin());
+    EXPECT_EQ(index.zoneAt({best.pose.x, best.pose.y}), top_zone);
+    const bool in_truth_zone = index.zoneAt({truth.x(), truth.y()}) == top_zone;
+    if (in_truth_zone && on.ranking.localized)
+      right += std::hypot(best.pose.x - truth.x(), best.pose.y - truth.y()) < 0.5;
+  }
+  EXPECT_EQ(searched, trials);
+  EXPECT_GE(right, 1) << "the search of the right zone should find the pose";
 }
 
 }  // namespace
