@@ -1,11 +1,27 @@
 #!/usr/bin/env bash
-# Regenerates the committed relocalization report (issue 4): every initialization method on the same
-# simulated kidnaps in office_two_zone (360 deg 12 m lidar), including `seeded` with the shipped
-# models/office_two_zone and the `global-matcher` baseline. 30 trials, 10 steps (~5 min on 2 cores).
-# Usage: scripts/bench_relocalization.sh [extra krp-bench flags]   (build first with scripts/build.sh)
+# Regenerates the committed relocalization reports (issue 4), every method on the same simulated
+# kidnaps with the same seeds, 360 deg 12 m lidar, 10 updates:
+#   office_two_zone: 100 trials, uniform-mcl, amcl-kld, seeded (shipped models + zone search),
+#                    seeded-no-uniform, seeded-keypoints-only (the models alone), global-matcher (~12 min);
+#   warehouse:       30 trials, the same without uniform-mcl, whose 92,537 particles cost ~3.5 s an
+#                    update there (reports/baseline/warehouse has it over 40 updates) (~5 min).
+# Usage: scripts/bench_relocalization.sh [office|warehouse|all] [extra krp-bench flags]
+# (build first with scripts/build.sh)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
-./build/mrpt_krp_plugin/apps/krp-bench --worlds office_two_zone --lidars omni_12m \
-  --methods uniform-mcl,amcl-kld,seeded,seeded-no-uniform,global-matcher --models-root models \
-  --trials 30 --steps 10 --seed 1 --out reports/relocalization/office_two_zone "$@"
+which="${1:-all}"
+[[ $# -gt 0 ]] && shift
+case "$which" in office|warehouse|all) ;; *) echo "usage: $0 [office|warehouse|all] [krp-bench flags]" >&2; exit 2;; esac
+bench=./build/mrpt_krp_plugin/apps/krp-bench
+common=(--lidars omni_12m --models-root models --steps 10 --seed 1)
+if [[ "$which" == all || "$which" == office ]]; then
+  "$bench" --worlds office_two_zone "${common[@]}" --trials 100 \
+    --methods uniform-mcl,amcl-kld,seeded,seeded-no-uniform,seeded-keypoints-only,global-matcher \
+    --out reports/relocalization/office_two_zone "$@"
+fi
+if [[ "$which" == all || "$which" == warehouse ]]; then
+  "$bench" --worlds warehouse "${common[@]}" --trials 30 \
+    --methods amcl-kld,seeded,seeded-no-uniform,seeded-keypoints-only,global-matcher \
+    --out reports/relocalization/warehouse "$@"
+fi

@@ -42,6 +42,8 @@ static int run(int argc, char** argv) {
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"seeded-max-particles", "N", "seeded: particle cap", "5000"},
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
+                {"search-zones", "N", "seeded: when the keypoints give no credible pose, the correlative matcher "
+                 "searches this many of the classifier's most likely zones (0 = no zone search)", "1"},
                 {"tol-xy", "M", "convergence tolerance, position", "0.5"},
                 {"tol-deg", "DEG", "convergence tolerance, heading", "10"},
                 {"save-rawlogs", "", "also write each trial as an MRPT rawlog, a CARMEN log and its ground truth under OUT/rawlogs", ""}});
@@ -67,6 +69,10 @@ static int run(int argc, char** argv) {
   cfg.method_settings.seeded.uniform_fraction = args.number("seeded-uniform-fraction");
   cfg.method_settings.seeded.max_particles = static_cast<size_t>(args.integer("seeded-max-particles"));
   cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integer("top-zones"));
+  const auto search_zones = args.integer("search-zones");
+  if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
+  cfg.method_settings.relocalizer.zone_search.enabled = search_zones > 0;
+  cfg.method_settings.relocalizer.zone_search.zones = static_cast<int>(search_zones);
   cfg.criteria.max_error_xy_m = args.number("tol-xy");
   cfg.criteria.max_error_phi_deg = args.number("tol-deg");
   const std::string out = args.get("out");

@@ -35,7 +35,8 @@ constexpr char kSection[] = "localize";
 const std::set<std::string> kIniKeys = {"map", "rawlog", "bag", "carmen", "carmen_fov_deg", "truth_from_log", "scan_topic",
                                         "odom_frame", "base_frame", "method", "ground_truth", "out_dir", "seed",
                                         "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min",
-                                        "models", "zones", "single_scan", "single_scan_stride", "top_zones", "seeded_uniform_fraction"};
+                                        "models", "zones", "single_scan", "single_scan_stride", "top_zones", "search_zones",
+                                        "seeded_uniform_fraction"};
 
 std::string flagName(std::string key) {
   for (auto& c : key) if (c == '_') c = '-';
@@ -208,6 +209,8 @@ static int run(int argc, char** argv) {
                  "with --method global-matcher", "-1"},
                 {"single-scan-stride", "N", "--single-scan all: every N-th scan", "1"},
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
+                {"search-zones", "N", "seeded, with --zones: the classifier's most likely zones searched when the "
+                 "keypoints give no credible pose (0 = no zone search)", "1"},
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"ground-truth", "FILE", "ground truth 'step x y phi' (optional)", ""},
                 {"out-dir", "DIR", "output folder", "out/localize"},
@@ -231,6 +234,10 @@ static int run(int argc, char** argv) {
   ms.amcl.max_particles = static_cast<size_t>(toNumber(s, "kld_max"));
   ms.amcl.min_particles = static_cast<size_t>(toNumber(s, "kld_min"));
   ms.relocalizer.top_zones = static_cast<int>(toNumber(s, "top_zones"));
+  const auto search_zones = toNumber(s, "search_zones");
+  if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
+  ms.relocalizer.zone_search.enabled = search_zones > 0;
+  ms.relocalizer.zone_search.zones = static_cast<int>(search_zones);
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
   const bool every_scan = s["single_scan"] == "all";
   const auto single_scan = every_scan ? 0L : static_cast<long>(toNumber(s, "single_scan"));

@@ -2,6 +2,7 @@
 #include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/zones/zones_yaml.h"
 
 namespace krp {
 
@@ -13,7 +14,10 @@ HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupan
   if (params.backend == "learned") {
     if (params.models_dir.empty())
       throw InputError("hypothesis source 'learned'", "needs a models folder (manifest.json + ONNX models)");
-    auto relocalizer = std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned);
+    auto relocalizer = params.zones_file.empty()
+                           ? std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned)
+                           : std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned,
+                                                                 readZonesYaml(params.zones_file));
     // The map is captured too: the relocalizer's verifier was built from it.
     return [relocalizer, map](const mrpt::obs::CObservation2DRangeScan& scan) {
       return relocalizer->relocalize(scan).ranking;

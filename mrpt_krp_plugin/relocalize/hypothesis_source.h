@@ -25,6 +25,9 @@ using HypothesisSource = std::function<Ranking(const mrpt::obs::CObservation2DRa
 struct HypothesisSourceParams {
   std::string backend = "learned";
   std::string models_dir;  ///< needed by `learned`
+  /// `learned`, optional: the zones.yaml the models were trained on, which enables the
+  /// relocalizer's zone search (ZoneSearchParams) when the keypoints give no credible pose.
+  std::string zones_file;
   RelocalizerParams learned;
   MatcherRelocalizerParams matcher;
 };

@@ -6,6 +6,9 @@
 
 namespace krp {
 
+/// What proposed a hypothesis: the keypoint alignment or a correlative search of the map.
+enum class PoseOrigin { kKeypoints, kMatcher };
+
 /// One candidate robot pose from the relocalizer, with the evidence behind it.
 struct PoseHypothesis {
   mrpt::math::TPose2D pose;         ///< robot pose in the map (grid) frame
@@ -16,6 +19,7 @@ struct PoseHypothesis {
   double alignment_rms_m = 0.0;     ///< RMS keypoint residual of the alignment [m]
   double fit_fraction = 0.0;        ///< scan returns explained by the map at `pose` (ScanFit) [0..1]
   double confidence = 0.0;          ///< probability that this is the robot's pose (HypothesisRanking) [0..1]
+  PoseOrigin origin = PoseOrigin::kKeypoints;
 };
 
 }  // namespace krp

@@ -18,6 +18,8 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 // Drawing: an arrow this long stands for a pose, whatever the map's resolution [m].
 constexpr double kArrowLengthM = 1.0;
 
+const char* originName(PoseOrigin o) { return o == PoseOrigin::kMatcher ? "matcher" : "keypoints"; }
+
 std::string zoneName(int zone, const std::vector<std::string>& names) {
   return zone >= 0 && zone < static_cast<int>(names.size()) ? names[zone] : "?";
 }
@@ -41,6 +43,7 @@ nlohmann::json relocalizationJson(const RelocalizationResult& r, const std::vect
   for (size_t z = 0; z < r.zone_probabilities.size(); ++z) j["zone_probabilities"][zoneName(int(z), zone_names)] = r.zone_probabilities[z];
   j["detections"] = r.detections;
   j["candidates"] = r.candidates;
+  j["zone_search"] = {{"used", r.zone_search_used}, {"candidates", r.zone_search_candidates}};
   j["hypotheses"] = nlohmann::json::array();
   for (const auto& h : r.ranking.hypotheses) {
     std::vector<double> cov;
@@ -50,11 +53,12 @@ nlohmann::json relocalizationJson(const RelocalizationResult& r, const std::vect
                                {"covariance_x_y_yaw", cov}, {"zone", zoneName(h.zone, zone_names)},
                                {"zone_probability", h.zone_probability}, {"keypoint_inliers", h.keypoint_inliers},
                                {"alignment_rms_m", h.alignment_rms_m}, {"fit_fraction", h.fit_fraction},
-                               {"confidence", h.confidence}});
+                               {"confidence", h.confidence}, {"origin", originName(h.origin)}});
   }
   const auto& t = r.times;
   j["times_ms"] = {{"submap", t.submap_ms}, {"classifier", t.classifier_ms}, {"keypoints", t.keypoints_ms},
-                   {"alignment", t.alignment_ms}, {"verification", t.verification_ms}, {"total", t.total_ms}};
+                   {"alignment", t.alignment_ms}, {"verification", t.verification_ms}, {"zone_search", t.zone_search_ms},
+                   {"total", t.total_ms}};
   return j;
 }
 
@@ -65,12 +69,15 @@ std::string relocalizationText(const RelocalizationResult& r, const std::vector<
   for (size_t z = 0; z < r.zone_probabilities.size(); ++z) o << " " << zoneName(int(z), zone_names) << " " << r.zone_probabilities[z];
   o << "\n" << r.detections << " detection(s), " << r.candidates << " aligned candidate(s), " << r.ranking.hypotheses.size()
     << " hypothesis(es) after verification, " << r.times.total_ms << " ms\n";
+  if (r.zone_search_used)
+    o << "zone search (the keypoints gave no credible pose): " << r.zone_search_candidates << " pose(s) from the matcher, "
+      << r.times.zone_search_ms << " ms\n";
   for (size_t i = 0; i < r.ranking.hypotheses.size(); ++i) {
     const auto& h = r.ranking.hypotheses[i];
     o << "  #" << i + 1 << " x " << h.pose.x << " m, y " << h.pose.y << " m, yaw " << h.pose.phi * kRadToDeg
       << " deg; std " << std::sqrt(h.cov(0, 0)) << " / " << std::sqrt(h.cov(1, 1)) << " m, "
       << std::sqrt(h.cov(2, 2)) * kRadToDeg << " deg; zone " << zoneName(h.zone, zone_names) << "; fit "
-      << h.fit_fraction << "; confidence " << h.confidence << "\n";
+      << h.fit_fraction << "; confidence " << h.confidence << "; from " << originName(h.origin) << "\n";
   }
   return o.str();
 }

@@ -69,6 +69,7 @@ const std::map<std::string, Reader>& readers() {
       {"min_valid_returns", integer(&NodeParams::min_valid_returns, 1, 100000)},
       {"backend", string(&NodeParams::backend)},
       {"models_dir", string(&NodeParams::models_dir)},
+      {"zones_file", string(&NodeParams::zones_file)},
       {"relocalize_on_startup", boolean(&NodeParams::relocalize_on_startup)},
       {"relocalize_on_kidnap", boolean(&NodeParams::relocalize_on_kidnap)},
       {"publish_when_not_localized", boolean(&NodeParams::publish_when_not_localized)},
@@ -122,6 +123,7 @@ HypothesisSourceParams NodeParams::hypothesisSource() const {
   HypothesisSourceParams h;
   h.backend = backend;
   h.models_dir = models_dir;
+  h.zones_file = zones_file;
   return h;
 }
 
