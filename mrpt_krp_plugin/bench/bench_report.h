@@ -27,9 +27,14 @@ struct MethodSummary {
   double seed_localized_rate = -1.0;    ///< it called itself localized / trials
   double seed_best_right_rate = -1.0;   ///< its best hypothesis was within max_error_xy_m of the truth / trials
   double seed_localized_wrong_rate = -1.0;  ///< it called itself localized and its best was not right / trials
+  double seed_best_from_matcher_rate = -1.0;  ///< its best came from a correlative search / trials
 };
 
 std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, double right_within_m = 0.5);
+
+/// The first-scan relocalization of the methods that have one (seeded, global-matcher), before
+/// the filter runs, as a Markdown table with its legend; empty when no method has one.
+std::string relocalizerTable(const std::vector<MethodSummary>& summaries, double right_within_m);
 
 /// The Markdown table of summaries, with ratios against `reference_method` where present.
 std::string summaryTable(const std::vector<MethodSummary>& summaries, const std::string& reference_method = "uniform-mcl");

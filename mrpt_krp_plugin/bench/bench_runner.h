@@ -44,6 +44,7 @@ struct TrialRecord {
   bool seed_localized = false;     ///< it called itself localized
   double seed_best_error_xy_m = -1.0;  ///< its best hypothesis's distance to the truth [m]; -1 without one
   double seed_best_confidence = -1.0;  ///< the confidence it gave its best hypothesis; -1 without one
+  bool seed_best_from_matcher = false;  ///< its best came from a correlative search (seeded: the zone search)
   int kidnap_step = -1;            ///< the update the robot was carried before; -1 without a kidnap
   KidnapOutcome kidnap;            ///< valid when kidnap_step >= 0
 };

@@ -122,5 +122,32 @@ TEST(BenchSummary, KidnapRatesAreOverTrialsThatWereTracking) {
   EXPECT_TRUE(kidnapSection(summarizeKidnaps({}), 5).empty());
 }
 
+// The first-scan relocalization rates count only methods with a relocalizer, over their trials.
+TEST(BenchSummary, RelocalizerRatesCountWhereTheBestCameFrom) {
+  auto trial = [](const char* method, int hypotheses, bool localized, double error_m, bool from_matcher) {
+    TrialRecord r;
+    r.world = "w", r.lidar = "l", r.method = method;
+    r.seed_hypotheses = hypotheses;
+    r.seed_localized = localized;
+    r.seed_best_error_xy_m = error_m;
+    r.seed_best_confidence = hypotheses > 0 ? 0.9 : -1.0;
+    r.seed_best_from_matcher = from_matcher;
+    return r;
+  };
+  const std::vector<TrialRecord> records = {trial("seeded", 2, true, 0.1, true), trial("seeded", 1, true, 3.0, false),
+                                            trial("seeded", 1, false, 0.2, false), trial("seeded", 0, false, -1, false),
+                                            trial("uniform-mcl", -1, false, -1, false)};
+  const auto s = summarize(records, 0.5);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_DOUBLE_EQ(s[0].seed_localized_rate, 0.5);
+  EXPECT_DOUBLE_EQ(s[0].seed_best_right_rate, 0.5);
+  EXPECT_DOUBLE_EQ(s[0].seed_localized_wrong_rate, 0.25);
+  EXPECT_DOUBLE_EQ(s[0].seed_best_from_matcher_rate, 0.25);
+  EXPECT_LT(s[1].seed_best_from_matcher_rate, 0.0) << "no relocalizer, no rate";
+  const auto table = relocalizerTable(s, 0.5);
+  EXPECT_NE(table.find("| w | l | seeded | 50 % | 50 % | 25 % | 25 % |"), std::string::npos) << table;
+  EXPECT_EQ(table.find("uniform-mcl"), std::string::npos) << table;
+}
+
 }  // namespace
 }  // namespace krp
