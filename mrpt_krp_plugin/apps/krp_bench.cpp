@@ -2,11 +2,14 @@
 // krp-bench: kidnapped-robot trials in simulated worlds, every method on the same trials.
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
+#include <vector>
 
 #include "cli_args.h"
 #include "mrpt_krp_plugin/bench/bench_report.h"
 #include "mrpt_krp_plugin/bench/kidnap_report.h"
 #include "mrpt_krp_plugin/bench/bench_runner.h"
+#include "mrpt_krp_plugin/bench/calibration_fit.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 
 namespace fs = std::filesystem;
@@ -44,6 +47,10 @@ static int run(int argc, char** argv) {
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"search-zones", "N", "seeded: when the keypoints give no credible pose, the correlative matcher "
                  "searches this many of the classifier's most likely zones (0 = no zone search)", "1"},
+                {"calibration", "FILE", "relocalizing methods: a confidence calibration (--fit-calibration's output) "
+                 "applied before the 'localized' threshold", ""},
+                {"fit-calibration", "FILE", "fit a confidence calibration on this run's first-scan answers (one world, "
+                 "one relocalizing method, no --calibration) and write it", ""},
                 {"tol-xy", "M", "convergence tolerance, position", "0.5"},
                 {"tol-deg", "DEG", "convergence tolerance, heading", "10"},
                 {"save-rawlogs", "", "also write each trial as an MRPT rawlog, a CARMEN log and its ground truth under OUT/rawlogs", ""}});
@@ -73,6 +80,17 @@ static int run(int argc, char** argv) {
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
   cfg.method_settings.relocalizer.zone_search.enabled = search_zones > 0;
   cfg.method_settings.relocalizer.zone_search.zones = static_cast<int>(search_zones);
+  const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");
+  if (!calibration.empty()) {
+    if (!fit_calibration.empty())
+      throw krp::InputError("--fit-calibration", "fits raw confidences: leave out --calibration");
+    const auto c = krp::readConfidenceCalibration(calibration);
+    cfg.method_settings.relocalizer.verifier.ranking.calibration = c;
+    cfg.method_settings.matcher.verifier.ranking.calibration = c;
+  }
+  if (!fit_calibration.empty() && (cfg.world_files.size() != 1 || cfg.methods.size() != 1 ||
+                                   !(krp::methodNeedsModels(cfg.methods[0]) || krp::methodNeedsMatcher(cfg.methods[0]))))
+    throw krp::InputError("--fit-calibration", "needs one world and one relocalizing method (a calibration holds for one map)");
   cfg.criteria.max_error_xy_m = args.number("tol-xy");
   cfg.criteria.max_error_phi_deg = args.number("tol-deg");
   const std::string out = args.get("out");
@@ -80,6 +98,22 @@ static int run(int argc, char** argv) {
 
   const auto records = krp::runBench(cfg, std::cerr);
   krp::writeBenchReport(records, cfg, args.commandLine(), out);
+  if (!fit_calibration.empty()) {
+    std::vector<krp::ConfidenceOutcome> answers;
+    for (const auto& r : records)
+      if (r.seed_best_confidence >= 0)
+        answers.push_back({r.seed_best_confidence, r.seed_best_error_xy_m <= cfg.criteria.max_error_xy_m});
+    krp::ConfidenceCalibration c;
+    try {
+      c = krp::fitConfidenceCalibration(answers);
+    } catch (const std::invalid_argument& e) {
+      throw krp::InputError("--fit-calibration", e.what());
+    }
+    c.fitted_by = args.commandLine();
+    krp::writeConfidenceCalibration(c, fit_calibration);
+    std::cout << "calibration: slope " << c.slope << ", offset " << c.offset << " from " << c.answers << " answers -> "
+              << fit_calibration << "\n";
+  }
   std::cout << "\n" << krp::summaryTable(krp::summarize(records, cfg.criteria.max_error_xy_m)) << "\n"
             << krp::kidnapSection(krp::summarizeKidnaps(records), cfg.kidnap_at_step) << "Report: " << (fs::path(out) / "REPORT.md").string()
             << " (trials.csv, updates.csv, summary.json, plots beside it)\n";

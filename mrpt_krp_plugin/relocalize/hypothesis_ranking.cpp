@@ -36,7 +36,8 @@ Ranking rankHypotheses(std::vector<PoseHypothesis> candidates, const HypothesisR
   for (const auto& h : r.hypotheses) top = std::max(top, params.fit_sharpness * h.fit_fraction);
   double total = std::exp(params.fit_sharpness * params.null_fit_fraction - top);
   for (const auto& h : r.hypotheses) total += std::exp(params.fit_sharpness * h.fit_fraction - top);
-  for (auto& h : r.hypotheses) h.confidence = std::exp(params.fit_sharpness * h.fit_fraction - top) / total;
+  for (auto& h : r.hypotheses)
+    h.confidence = calibrateConfidence(params.calibration, std::exp(params.fit_sharpness * h.fit_fraction - top) / total);
   if (static_cast<int>(r.hypotheses.size()) > params.max_hypotheses) r.hypotheses.resize(params.max_hypotheses);
 
   std::ostringstream why;

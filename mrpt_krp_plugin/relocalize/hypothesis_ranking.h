@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "mrpt_krp_plugin/relocalize/confidence_calibration.h"
 #include "mrpt_krp_plugin/relocalize/pose_hypothesis.h"
 
 namespace krp {
@@ -13,10 +14,11 @@ struct HypothesisRankingParams {
   double merge_angle_deg = 10.0;   ///< [deg]
   /// Confidence is a softmax of sharpness * fit_fraction over the hypotheses and one implicit
   /// "somewhere else" alternative with fit `null_fit_fraction`: a lone hypothesis that explains
-  /// no more of the scan than that gets at most one half. Defaults chosen by hand, not yet
-  /// calibrated on held-out trials.
+  /// no more of the scan than that gets at most one half. Defaults chosen by hand; `calibration`
+  /// then maps the softmax to a probability fitted on held-out trials of a map.
   double fit_sharpness = 25.0;
   double null_fit_fraction = 0.6;
+  ConfidenceCalibration calibration;  ///< the identity unless fitted (krp-bench --fit-calibration)
   double min_fit_fraction = 0.5;  ///< below this a hypothesis is dropped: the map does not explain the scan
   double min_confidence = 0.8;    ///< the best must reach this to be called localized
   int max_hypotheses = 10;        ///< kept after ranking

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <vector>
+
+#include "mrpt_krp_plugin/bench/reliability.h"
+#include "mrpt_krp_plugin/relocalize/confidence_calibration.h"
+
+namespace krp {
+
+struct CalibrationFitParams {
+  /// Fewer answers than this are refused: a fit on a handful of trials is noise.
+  int min_answers = 20;
+  /// Ridge pull of (slope - 1, offset) towards the identity, in units of answers: with every
+  /// answer right (nothing to separate) maximum likelihood alone would run off to infinity.
+  double prior_weight = 1.0;
+  int max_iterations = 100;
+};
+
+/// Fits Platt scaling (ConfidenceCalibration) to raw first-scan confidences and whether each was
+/// right, by Newton's method on the penalized log-likelihood. std::invalid_argument for too few
+/// answers or for confidences that fall as rightness rises (a negative slope).
+ConfidenceCalibration fitConfidenceCalibration(const std::vector<ConfidenceOutcome>& answers,
+                                               const CalibrationFitParams& params = {});
+
+}  // namespace krp
