@@ -18,6 +18,7 @@
 #include "mrpt_krp_plugin/common/statistics.h"
 #include "mrpt_krp_plugin/logs/carmen_log.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
+#include "mrpt_krp_plugin/relocalize/confidence_calibration.h"
 #include "mrpt_krp_plugin/relocalize/relocalization_output.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 #include "mrpt_krp_plugin/zones/zones_yaml.h"
@@ -35,7 +36,7 @@ constexpr char kSection[] = "localize";
 const std::set<std::string> kIniKeys = {"map", "rawlog", "bag", "carmen", "carmen_fov_deg", "truth_from_log", "scan_topic",
                                         "odom_frame", "base_frame", "method", "ground_truth", "out_dir", "seed",
                                         "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min",
-                                        "models", "zones", "single_scan", "single_scan_stride", "top_zones", "search_zones",
+                                        "models", "zones", "calibration", "single_scan", "single_scan_stride", "top_zones", "search_zones",
                                         "seeded_uniform_fraction"};
 
 std::string flagName(std::string key) {
@@ -62,7 +63,7 @@ std::map<std::string, std::string> mergeSettings(const CliArgs& args) {
     if (!args.has(flagName(k))) s[k] = cfg.read_string(kSection, k, "");
   }
   // Relative paths in the INI are relative to the INI's folder.
-  for (const char* k : {"map", "rawlog", "bag", "carmen", "ground_truth", "out_dir", "models", "zones"})
+  for (const char* k : {"map", "rawlog", "bag", "carmen", "ground_truth", "out_dir", "models", "zones", "calibration"})
     if (!args.has(flagName(k)) && !s[k].empty() && fs::path(s[k]).is_relative() && keys.end() != std::find(keys.begin(), keys.end(), k))
       s[k] = (fs::path(ini).parent_path() / s[k]).string();
   return s;
@@ -203,6 +204,8 @@ static int run(int argc, char** argv) {
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
                 {"zones", "FILE", "seeded / single scan: the zones.yaml the models were trained on; when the keypoints "
                  "give no credible pose, the classifier's most likely zone is searched by the correlative matcher", ""},
+                {"calibration", "FILE", "seeded / global-matcher: the map's confidence calibration (krp-bench "
+                 "--fit-calibration), applied before the 'localized' threshold", ""},
                 {"single-scan", "STEP|all", "relocalize from this step's scan only: print the hypotheses, write "
                  "hypotheses.json and hypotheses.png; 'all': every scan on its own, written as single_scan.csv/.png "
                  "with counts against the ground truth (-1 = run the filter). Uses --models, or the global matcher "
@@ -238,6 +241,11 @@ static int run(int argc, char** argv) {
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
   ms.relocalizer.zone_search.enabled = search_zones > 0;
   ms.relocalizer.zone_search.zones = static_cast<int>(search_zones);
+  if (!s["calibration"].empty()) {
+    const auto c = krp::readConfidenceCalibration(s["calibration"]);
+    ms.relocalizer.verifier.ranking.calibration = c;
+    ms.matcher.verifier.ranking.calibration = c;
+  }
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
   const bool every_scan = s["single_scan"] == "all";
   const auto single_scan = every_scan ? 0L : static_cast<long>(toNumber(s, "single_scan"));

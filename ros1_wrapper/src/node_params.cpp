@@ -8,6 +8,7 @@
 #include <map>
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/relocalize/confidence_calibration.h"
 
 namespace krp::ros1 {
 
@@ -70,6 +71,7 @@ const std::map<std::string, Reader>& readers() {
       {"backend", string(&NodeParams::backend)},
       {"models_dir", string(&NodeParams::models_dir)},
       {"zones_file", string(&NodeParams::zones_file)},
+      {"calibration_file", string(&NodeParams::calibration_file)},
       {"relocalize_on_startup", boolean(&NodeParams::relocalize_on_startup)},
       {"relocalize_on_kidnap", boolean(&NodeParams::relocalize_on_kidnap)},
       {"publish_when_not_localized", boolean(&NodeParams::publish_when_not_localized)},
@@ -124,6 +126,11 @@ HypothesisSourceParams NodeParams::hypothesisSource() const {
   h.backend = backend;
   h.models_dir = models_dir;
   h.zones_file = zones_file;
+  if (!calibration_file.empty()) {
+    const auto c = readConfidenceCalibration(calibration_file);
+    h.learned.verifier.ranking.calibration = c;
+    h.matcher.verifier.ranking.calibration = c;
+  }
   return h;
 }
 
