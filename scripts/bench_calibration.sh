@@ -7,7 +7,9 @@
 #   3. the same seed-7 trials with the calibration    -> reports/calibration/<world>/calibrated/REPORT.md
 # Each world runs alone, because trial seeds depend on a world's place in the run: 2 and 3 replay
 # the same trials. The reports' reliability tables bin the best hypothesis's confidence against
-# how often it was right (~30 min on 2 cores, most of it the warehouse).
+# how often it was right. The learned relocalizer (`seeded`, shipped models + zone search) gets
+# the same treatment on the worlds that have models, under reports/calibration/learned/
+# (~40 min on 2 cores in all, most of it the warehouse).
 # Usage: scripts/bench_calibration.sh [extra krp-bench flags]   (build first with scripts/build.sh)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -20,4 +22,12 @@ for w in office_two_zone warehouse office_cluttered; do
   "$bench" --worlds "$w" "${common[@]}" --seed 7 --out "reports/calibration/$w/raw" "$@"
   "$bench" --worlds "$w" "${common[@]}" --seed 7 --out "reports/calibration/$w/calibrated" \
     --calibration "reports/calibration/$w.calibration.yaml" "$@"
+done
+for w in office_two_zone warehouse; do
+  learned=(--lidars omni_12m --methods seeded --models-root models --trials 100 --steps 0)
+  "$bench" --worlds "$w" "${learned[@]}" --seed 11 --out "out/calibration_fit/learned/$w" \
+    --fit-calibration "reports/calibration/learned/$w.calibration.yaml" "$@"
+  "$bench" --worlds "$w" "${learned[@]}" --seed 7 --out "reports/calibration/learned/$w/raw" "$@"
+  "$bench" --worlds "$w" "${learned[@]}" --seed 7 --out "reports/calibration/learned/$w/calibrated" \
+    --calibration "reports/calibration/learned/$w.calibration.yaml" "$@"
 done

@@ -12,12 +12,26 @@ namespace {
 // The same margin as calibrateConfidence keeps: a saturated softmax still has a finite logit.
 constexpr double kConfidenceMargin = 1e-9;
 constexpr double kConvergedStep = 1e-10;
+constexpr double kConvergedLoss = 1e-12;
+constexpr int kMaxHalvings = 60;
 
 double logit(double p) {
   const double q = std::clamp(p, kConfidenceMargin, 1.0 - kConfidenceMargin);
   return std::log(q / (1.0 - q));
 }
 }  // namespace
+
+double calibrationLoss(const std::vector<ConfidenceOutcome>& answers, double slope, double offset,
+                       double prior_weight) {
+  double loss = 0.5 * prior_weight * ((slope - 1.0) * (slope - 1.0) + offset * offset);
+  for (const auto& ans : answers) {
+    const double z = slope * logit(ans.confidence) + offset;
+    // -log sigmoid(z) for a right answer, -log(1 - sigmoid(z)) for a wrong one, without overflow.
+    const double signed_z = ans.right ? z : -z;
+    loss += signed_z > 0 ? std::log1p(std::exp(-signed_z)) : -signed_z + std::log1p(std::exp(signed_z));
+  }
+  return loss;
+}
 
 ConfidenceCalibration fitConfidenceCalibration(const std::vector<ConfidenceOutcome>& answers,
                                                const CalibrationFitParams& params) {
@@ -26,7 +40,9 @@ ConfidenceCalibration fitConfidenceCalibration(const std::vector<ConfidenceOutco
                                 std::to_string(params.min_answers) + " needed");
   double a = 1.0, b = 0.0;  // start at the identity, where the prior pulls
   const double lambda = params.prior_weight;
-  for (int it = 0; it < params.max_iterations; ++it) {
+  double loss = calibrationLoss(answers, a, b, lambda);
+  bool converged = false;
+  for (int it = 0; it < params.max_iterations && !converged; ++it) {
     double ga = lambda * (a - 1.0), gb = lambda * b, haa = lambda, hab = 0.0, hbb = lambda;
     for (const auto& ans : answers) {
       const double x = logit(ans.confidence);
@@ -40,9 +56,18 @@ ConfidenceCalibration fitConfidenceCalibration(const std::vector<ConfidenceOutco
     }
     const double det = haa * hbb - hab * hab;
     const double da = (hbb * ga - hab * gb) / det, db = (haa * gb - hab * ga) / det;
-    a -= da;
-    b -= db;
-    if (std::abs(da) + std::abs(db) < kConvergedStep) break;
+    // Newton's full step overshoots where confidences saturate (logits near +-20): halve it
+    // until the loss falls, as a damped Newton method must.
+    double step = 1.0, next = loss;
+    for (int halving = 0; halving < kMaxHalvings; ++halving, step *= 0.5) {
+      next = calibrationLoss(answers, a - step * da, b - step * db, lambda);
+      if (next <= loss) break;
+    }
+    if (next > loss) break;  // no step lowers the loss: at the minimum to rounding
+    a -= step * da;
+    b -= step * db;
+    converged = step * (std::abs(da) + std::abs(db)) < kConvergedStep || loss - next < kConvergedLoss;
+    loss = next;
   }
   if (!(a > 0.0))
     throw std::invalid_argument("calibration fit: the confidence falls as rightness rises (slope " + std::to_string(a) +

@@ -17,8 +17,13 @@ struct CalibrationFitParams {
   int max_iterations = 100;
 };
 
+/// The penalized negative log-likelihood that the fit minimizes: the answers' log loss under
+/// sigmoid(slope * logit(confidence) + offset), plus prior_weight / 2 * ((slope - 1)^2 + offset^2).
+double calibrationLoss(const std::vector<ConfidenceOutcome>& answers, double slope, double offset,
+                       double prior_weight);
+
 /// Fits Platt scaling (ConfidenceCalibration) to raw first-scan confidences and whether each was
-/// right, by Newton's method on the penalized log-likelihood. std::invalid_argument for too few
+/// right, by damped Newton steps on calibrationLoss. std::invalid_argument for too few
 /// answers or for confidences that fall as rightness rises (a negative slope).
 ConfidenceCalibration fitConfidenceCalibration(const std::vector<ConfidenceOutcome>& answers,
                                                const CalibrationFitParams& params = {});

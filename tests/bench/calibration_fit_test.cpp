@@ -44,6 +44,26 @@ TEST(CalibrationFit, AllRightStaysFiniteAndRaisesTheConfidence) {
   EXPECT_GT(calibrateConfidence(fit, 0.6), 0.6) << "every answer was right: the map is under-confident";
 }
 
+// Saturated confidences (many at 0.999+, logits near 20) made undamped Newton steps run off to a
+// slope of 563; the fit must land on the loss's minimum.
+TEST(CalibrationFit, SaturatedConfidencesStillReachTheMinimum) {
+  std::vector<ConfidenceOutcome> answers;
+  auto add = [&](double confidence, int right, int wrong) {
+    for (int i = 0; i < right; ++i) answers.push_back({confidence, true});
+    for (int i = 0; i < wrong; ++i) answers.push_back({confidence, false});
+  };
+  add(0.40, 2, 0), add(0.47, 0, 1), add(0.52, 0, 2), add(0.6, 3, 4), add(0.9, 23, 3), add(0.99999, 57, 5);
+  const CalibrationFitParams params;
+  const auto fit = fitConfidenceCalibration(answers, params);
+  const double at_fit = calibrationLoss(answers, fit.slope, fit.offset, params.prior_weight);
+  EXPECT_LT(at_fit, calibrationLoss(answers, 1.0, 0.0, params.prior_weight));
+  for (double da : {-1e-3, 0.0, 1e-3})
+    for (double db : {-1e-3, 0.0, 1e-3})
+      EXPECT_LE(at_fit, calibrationLoss(answers, fit.slope + da, fit.offset + db, params.prior_weight) + 1e-9)
+          << "not a minimum: slope " << fit.slope << " offset " << fit.offset;
+  EXPECT_LT(fit.slope, 5.0);
+}
+
 TEST(CalibrationFit, RefusesTooFewAnswersAndAnInvertedConfidence) {
   EXPECT_THROW(fitConfidenceCalibration(std::vector<ConfidenceOutcome>(5, {0.9, true})), std::invalid_argument);
   std::vector<ConfidenceOutcome> inverted;
