@@ -15,19 +15,20 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 bench=./build/mrpt_krp_plugin/apps/krp-bench
-common=(--lidars omni_12m --methods global-matcher --trials 100 --steps 0)
+extra=("$@")
+# fit on seed 11, then seed 7 raw and calibrated, for one world and relocalizer.
+#   $1: folder of the reports and calibration, $2: folder of the fit run, $3: world, rest: krp-bench flags
+calibrate() {
+  local reports="$1" fit_out="$2" w="$3"
+  shift 3
+  "$bench" --worlds "$w" "$@" --seed 11 --out "$fit_out/$w" --fit-calibration "$reports/$w.calibration.yaml" "${extra[@]}"
+  "$bench" --worlds "$w" "$@" --seed 7 --out "$reports/$w/raw" "${extra[@]}"
+  "$bench" --worlds "$w" "$@" --seed 7 --out "$reports/$w/calibrated" --calibration "$reports/$w.calibration.yaml" "${extra[@]}"
+}
 for w in office_two_zone warehouse office_cluttered; do
-  "$bench" --worlds "$w" "${common[@]}" --seed 11 --out "out/calibration_fit/$w" \
-    --fit-calibration "reports/calibration/$w.calibration.yaml" "$@"
-  "$bench" --worlds "$w" "${common[@]}" --seed 7 --out "reports/calibration/$w/raw" "$@"
-  "$bench" --worlds "$w" "${common[@]}" --seed 7 --out "reports/calibration/$w/calibrated" \
-    --calibration "reports/calibration/$w.calibration.yaml" "$@"
+  calibrate reports/calibration out/calibration_fit "$w" --lidars omni_12m --methods global-matcher --trials 100 --steps 0
 done
 for w in office_two_zone warehouse; do
-  learned=(--lidars omni_12m --methods seeded --models-root models --trials 100 --steps 0)
-  "$bench" --worlds "$w" "${learned[@]}" --seed 11 --out "out/calibration_fit/learned/$w" \
-    --fit-calibration "reports/calibration/learned/$w.calibration.yaml" "$@"
-  "$bench" --worlds "$w" "${learned[@]}" --seed 7 --out "reports/calibration/learned/$w/raw" "$@"
-  "$bench" --worlds "$w" "${learned[@]}" --seed 7 --out "reports/calibration/learned/$w/calibrated" \
-    --calibration "reports/calibration/learned/$w.calibration.yaml" "$@"
+  calibrate reports/calibration/learned out/calibration_fit/learned "$w" \
+    --lidars omni_12m --methods seeded --models-root models --trials 100 --steps 0
 done

@@ -11,6 +11,7 @@
 #include "mrpt_krp_plugin/bench/bench_runner.h"
 #include "mrpt_krp_plugin/bench/calibration_fit.h"
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
 
 namespace fs = std::filesystem;
 using krp::apps::CliArgs;
@@ -78,15 +79,13 @@ static int run(int argc, char** argv) {
   cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integer("top-zones"));
   const auto search_zones = args.integer("search-zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
-  cfg.method_settings.relocalizer.zone_search.enabled = search_zones > 0;
   cfg.method_settings.relocalizer.zone_search.zones = static_cast<int>(search_zones);
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");
   if (!calibration.empty()) {
     if (!fit_calibration.empty())
       throw krp::InputError("--fit-calibration", "fits raw confidences: leave out --calibration");
-    const auto c = krp::readConfidenceCalibration(calibration);
-    cfg.method_settings.relocalizer.verifier.ranking.calibration = c;
-    cfg.method_settings.matcher.verifier.ranking.calibration = c;
+    krp::useConfidenceCalibration(krp::readConfidenceCalibration(calibration), cfg.method_settings.relocalizer,
+                                  cfg.method_settings.matcher);
   }
   if (!fit_calibration.empty() && (cfg.world_files.size() != 1 || cfg.methods.size() != 1 ||
                                    !(krp::methodNeedsModels(cfg.methods[0]) || krp::methodNeedsMatcher(cfg.methods[0]))))
@@ -101,8 +100,7 @@ static int run(int argc, char** argv) {
   if (!fit_calibration.empty()) {
     std::vector<krp::ConfidenceOutcome> answers;
     for (const auto& r : records)
-      if (r.seed_best_confidence >= 0)
-        answers.push_back({r.seed_best_confidence, r.seed_best_error_xy_m <= cfg.criteria.max_error_xy_m});
+      if (r.seed_best_confidence >= 0) answers.push_back(krp::firstScanAnswer(r, cfg.criteria.max_error_xy_m));
     krp::ConfidenceCalibration c;
     try {
       c = krp::fitConfidenceCalibration(answers);

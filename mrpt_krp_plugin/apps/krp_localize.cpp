@@ -19,6 +19,7 @@
 #include "mrpt_krp_plugin/logs/carmen_log.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/relocalize/confidence_calibration.h"
+#include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
 #include "mrpt_krp_plugin/relocalize/relocalization_output.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 #include "mrpt_krp_plugin/zones/zones_yaml.h"
@@ -239,13 +240,9 @@ static int run(int argc, char** argv) {
   ms.relocalizer.top_zones = static_cast<int>(toNumber(s, "top_zones"));
   const auto search_zones = toNumber(s, "search_zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
-  ms.relocalizer.zone_search.enabled = search_zones > 0;
   ms.relocalizer.zone_search.zones = static_cast<int>(search_zones);
-  if (!s["calibration"].empty()) {
-    const auto c = krp::readConfidenceCalibration(s["calibration"]);
-    ms.relocalizer.verifier.ranking.calibration = c;
-    ms.matcher.verifier.ranking.calibration = c;
-  }
+  if (!s["calibration"].empty())
+    krp::useConfidenceCalibration(krp::readConfidenceCalibration(s["calibration"]), ms.relocalizer, ms.matcher);
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
   const bool every_scan = s["single_scan"] == "all";
   const auto single_scan = every_scan ? 0L : static_cast<long>(toNumber(s, "single_scan"));

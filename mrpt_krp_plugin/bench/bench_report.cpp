@@ -25,10 +25,6 @@ std::string ratio(double v, double ref) {
   return formatNumber(v / ref, 3) + "x";
 }
 
-// The relocalizer's best hypothesis was right: within `right_within_m` of the truth.
-bool seedBestRight(const TrialRecord& r, double right_within_m) {
-  return r.seed_best_error_xy_m >= 0 && r.seed_best_error_xy_m <= right_within_m;
-}
 
 /// Per method with a relocalizer: its best hypothesis's confidence against how often it was right.
 std::string reliabilitySections(const std::vector<TrialRecord>& records, double right_within_m) {
@@ -41,7 +37,7 @@ std::string reliabilitySections(const std::vector<TrialRecord>& records, double 
        "\"localized\" from 0.8.\n\n";
   for (const auto& g : groups) {
     std::vector<ConfidenceOutcome> answers;
-    for (const auto* r : g) answers.push_back({r->seed_best_confidence, seedBestRight(*r, right_within_m)});
+    for (const auto* r : g) answers.push_back(firstScanAnswer(*r, right_within_m));
     o << "**" << g.front()->world << ", " << g.front()->lidar << ", " << g.front()->method << "**\n\n"
       << reliabilityMarkdown(reliabilityTable(answers)) << "\n";
   }
@@ -49,6 +45,14 @@ std::string reliabilitySections(const std::vector<TrialRecord>& records, double 
 }
 
 }  // namespace
+
+bool seedBestRight(const TrialRecord& r, double right_within_m) {
+  return r.seed_best_error_xy_m >= 0 && r.seed_best_error_xy_m <= right_within_m;
+}
+
+ConfidenceOutcome firstScanAnswer(const TrialRecord& r, double right_within_m) {
+  return {r.seed_best_confidence, seedBestRight(r, right_within_m)};
+}
 
 std::string relocalizerTable(const std::vector<MethodSummary>& summaries, double right_within_m) {
   std::ostringstream o;

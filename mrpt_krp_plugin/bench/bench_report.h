@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mrpt_krp_plugin/bench/bench_runner.h"
+#include "mrpt_krp_plugin/bench/reliability.h"
 
 namespace krp {
 
@@ -31,6 +32,13 @@ struct MethodSummary {
 };
 
 std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, double right_within_m = 0.5);
+
+/// The relocalizer's best first-scan hypothesis was right: within `right_within_m` of the truth.
+bool seedBestRight(const TrialRecord& r, double right_within_m);
+
+/// That hypothesis's confidence and whether it was right, for reliability tables and calibration
+/// fits; meaningful when the relocalizer gave one (seed_best_confidence >= 0).
+ConfidenceOutcome firstScanAnswer(const TrialRecord& r, double right_within_m);
 
 /// The first-scan relocalization of the methods that have one (seeded, global-matcher), before
 /// the filter runs, as a Markdown table with its legend; empty when no method has one.

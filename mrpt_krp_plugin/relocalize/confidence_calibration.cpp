@@ -42,10 +42,14 @@ ConfidenceCalibration interpretCalibration(const YAML::Node& root, const std::st
 }
 }  // namespace
 
+double confidenceLogit(double raw) {
+  const double p = std::clamp(raw, kConfidenceMargin, 1.0 - kConfidenceMargin);
+  return std::log(p / (1.0 - p));
+}
+
 double calibrateConfidence(const ConfidenceCalibration& calibration, double raw) {
   if (calibration.isIdentity()) return raw;
-  const double p = std::clamp(raw, kConfidenceMargin, 1.0 - kConfidenceMargin);
-  const double z = calibration.slope * std::log(p / (1.0 - p)) + calibration.offset;
+  const double z = calibration.slope * confidenceLogit(raw) + calibration.offset;
   return 1.0 / (1.0 + std::exp(-z));
 }
 

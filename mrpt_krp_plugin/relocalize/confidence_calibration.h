@@ -17,8 +17,11 @@ struct ConfidenceCalibration {
   bool isIdentity() const { return slope == 1.0 && offset == 0.0; }
 };
 
-/// The calibrated confidence of a raw one in [0, 1]; raw values are kept a hair inside (0, 1) so
-/// that a softmax that saturated still maps to a finite logit.
+/// logit(raw) for a raw confidence in [0, 1], kept a hair inside (0, 1) so that a softmax that
+/// saturated still maps to a finite value (about +-21).
+double confidenceLogit(double raw);
+
+/// The calibrated confidence of a raw one in [0, 1].
 double calibrateConfidence(const ConfidenceCalibration& calibration, double raw);
 
 /// Reads a calibration YAML (keys slope, offset, answers, fitted_by). InputError naming the file for

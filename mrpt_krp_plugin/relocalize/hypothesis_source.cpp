@@ -6,6 +6,12 @@
 
 namespace krp {
 
+void useConfidenceCalibration(const ConfidenceCalibration& calibration, RelocalizerParams& learned,
+                              MatcherRelocalizerParams& matcher) {
+  learned.verifier.ranking.calibration = calibration;
+  matcher.verifier.ranking.calibration = calibration;
+}
+
 std::vector<std::string> hypothesisSourceBackends() { return {"learned", "global-matcher"}; }
 
 HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,

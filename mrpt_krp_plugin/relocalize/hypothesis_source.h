@@ -9,6 +9,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include "mrpt_krp_plugin/relocalize/confidence_calibration.h"
 #include "mrpt_krp_plugin/relocalize/hypothesis_ranking.h"
 #include "mrpt_krp_plugin/relocalize/matcher_relocalizer.h"
 #include "mrpt_krp_plugin/relocalize/relocalizer.h"
@@ -31,6 +32,10 @@ struct HypothesisSourceParams {
   RelocalizerParams learned;
   MatcherRelocalizerParams matcher;
 };
+
+/// A map's fitted confidence calibration (krp-bench --fit-calibration) for both backends' rankings.
+void useConfidenceCalibration(const ConfidenceCalibration& calibration, RelocalizerParams& learned,
+                              MatcherRelocalizerParams& matcher);
 
 /// The backend names accepted by makeHypothesisSource, in a stable order.
 std::vector<std::string> hypothesisSourceBackends();

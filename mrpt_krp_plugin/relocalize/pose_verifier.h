@@ -28,6 +28,12 @@ class PoseVerifier {
 
   Ranking verify(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<PoseHypothesis> candidates) const;
 
+  /// verify() in two halves, for callers that add candidates after a first ranking: refine and
+  /// score each candidate once (the costly half), then rank any set of scored ones.
+  std::vector<PoseHypothesis> refineAndScore(const mrpt::obs::CObservation2DRangeScan& scan,
+                                             std::vector<PoseHypothesis> candidates) const;
+  Ranking rank(std::vector<PoseHypothesis> scored) const;
+
   const ScanFitScorer& scorer() const { return scorer_; }
 
  private:

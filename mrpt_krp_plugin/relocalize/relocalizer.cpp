@@ -66,7 +66,7 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
 Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
                          RelocalizerParams params, const std::vector<Zone>& zones)
     : Relocalizer(models_dir, map, params) {
-  if (!params_.zone_search.enabled) return;
+  if (params_.zone_search.zones <= 0) return;
   zone_matcher_.emplace(map, params_.zone_search.matcher);
   for (const auto& name : manifest_.zones) {
     const auto it = std::find_if(zones.begin(), zones.end(), [&](const Zone& z) { return z.name == name; });
@@ -167,19 +167,18 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
   r.candidates = static_cast<int>(candidates.size());
 
   t = Clock::now();
-  // Kept for a second verification beside the zone search's poses, so that both compete.
-  std::vector<PoseHypothesis> keypoint_candidates;
-  if (zone_matcher_) keypoint_candidates = candidates;
-  r.ranking = verifier_.verify(scan, std::move(candidates));
+  // Scored once; when the zone search runs, its poses are ranked beside these.
+  auto scored = verifier_.refineAndScore(scan, std::move(candidates));
+  r.ranking = verifier_.rank(scored);
   r.times.verification_ms = msSince(t);
 
   if (!r.ranking.localized && zone_matcher_) {
     t = Clock::now();
-    auto found = zoneSearch(scan, r.zone_probabilities);
+    auto found = verifier_.refineAndScore(scan, zoneSearch(scan, r.zone_probabilities));
     r.zone_search_used = true;
     r.zone_search_candidates = static_cast<int>(found.size());
-    keypoint_candidates.insert(keypoint_candidates.end(), found.begin(), found.end());
-    r.ranking = verifier_.verify(scan, std::move(keypoint_candidates));
+    scored.insert(scored.end(), found.begin(), found.end());
+    r.ranking = verifier_.rank(std::move(scored));
     r.times.zone_search_ms = msSince(t);
   }
   r.times.total_ms = msSince(start);

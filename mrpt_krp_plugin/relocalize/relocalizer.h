@@ -23,8 +23,8 @@ namespace krp {
 /// the classifier's most likely zones only, a fraction of the cost of searching the whole map.
 /// Needs the zones' outlines (the Relocalizer constructor that takes zones).
 struct ZoneSearchParams {
-  bool enabled = true;
-  /// The classifier's most likely zones searched; the others stay the keypoints' business.
+  /// The classifier's most likely zones searched (0 = no zone search); the others stay the
+  /// keypoints' business.
   int zones = 1;
   CorrelativeMatcherParams matcher;
 };
@@ -58,7 +58,7 @@ struct RelocalizerParams {
 /// Wall-clock time of each stage of one relocalization [ms].
 struct RelocalizationTimes {
   double submap_ms = 0, classifier_ms = 0, keypoints_ms = 0, alignment_ms = 0, verification_ms = 0;
-  double zone_search_ms = 0;  ///< the zone search and the second verification, when they ran
+  double zone_search_ms = 0;  ///< the zone search, the scoring of its poses and the re-ranking, when they ran
   double total_ms = 0;
 };
 

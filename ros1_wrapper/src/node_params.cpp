@@ -126,11 +126,7 @@ HypothesisSourceParams NodeParams::hypothesisSource() const {
   h.backend = backend;
   h.models_dir = models_dir;
   h.zones_file = zones_file;
-  if (!calibration_file.empty()) {
-    const auto c = readConfidenceCalibration(calibration_file);
-    h.learned.verifier.ranking.calibration = c;
-    h.matcher.verifier.ranking.calibration = c;
-  }
+  if (!calibration_file.empty()) useConfidenceCalibration(readConfidenceCalibration(calibration_file), h.learned, h.matcher);
   return h;
 }
 
