@@ -200,8 +200,8 @@ static int run(int argc, char** argv) {
                 {"scan-topic", "TOPIC", "--bag: the LaserScan topic", "/scan"},
                 {"odom-frame", "FRAME", "--bag: odometry frame", "odom"},
                 {"base-frame", "FRAME", "--bag: robot frame", "base_link"},
-                {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform, seeded-keypoints-only "
-                 "or global-matcher", "amcl-kld"},
+                {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform, seeded-no-cross-check, "
+                 "seeded-keypoints-only or global-matcher", "amcl-kld"},
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
                 {"zones", "FILE", "seeded / single scan: the zones.yaml the models were trained on; when the keypoints "
                  "give no credible pose, the classifier's most likely zone is searched by the correlative matcher", ""},
@@ -255,10 +255,11 @@ static int run(int argc, char** argv) {
   if (krp::methodNeedsModels(s["method"]) || (single_scan_mode && !use_matcher)) {
     if (s["models"].empty())
       throw krp::InputError("--models", "required by method '" + s["method"] + "' and by --single-scan unless --method global-matcher");
-    const bool zone_search = !s["zones"].empty() && !krp::methodNeedsKeypointsOnly(s["method"]);
-    relocalizer = zone_search ? std::make_shared<krp::Relocalizer>(s["models"], *map.grid, ms.relocalizer,
-                                                                   krp::readZonesYaml(s["zones"]))
-                              : std::make_shared<krp::Relocalizer>(s["models"], *map.grid, ms.relocalizer);
+    // A non-seeded method (single-scan mode) gets the seeded relocalizer's parameters.
+    const auto rp = krp::relocalizerParamsFor(s["method"], ms.relocalizer);
+    const bool zone_search = !s["zones"].empty() && (krp::methodUsesZoneSearch(s["method"]) || !krp::methodNeedsModels(s["method"]));
+    relocalizer = zone_search ? std::make_shared<krp::Relocalizer>(s["models"], *map.grid, rp, krp::readZonesYaml(s["zones"]))
+                              : std::make_shared<krp::Relocalizer>(s["models"], *map.grid, rp);
   }
   std::vector<mrpt::math::TPose2D> truth;
   const auto steps = readSteps(s, &truth);
@@ -272,7 +273,8 @@ static int run(int argc, char** argv) {
       throw krp::InputError(s["ground_truth"], std::to_string(truth.size()) + " poses for " + std::to_string(steps.size()) +
                                                    " steps");
   }
-  krp::MethodResources resources{relocalizer, nullptr, relocalizer};
+  krp::MethodResources resources;
+  if (relocalizer) resources.relocalizers[s["method"]] = relocalizer;
   if (krp::methodNeedsMatcher(s["method"]) || (single_scan_mode && use_matcher))
     resources.matcher = std::make_shared<krp::MatcherRelocalizer>(*map.grid, ms.matcher);
   const std::string input = !s["bag"].empty() ? s["bag"] : !s["carmen"].empty() ? s["carmen"] : s["rawlog"];

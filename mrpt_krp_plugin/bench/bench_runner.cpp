@@ -45,12 +45,12 @@ Trial generateKidnapTrial(const mrpt::maps::COccupancyGridMap2D& map, const Lida
 
 std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
   const auto known = methodNames();
-  bool need_models = false, need_matcher = false, keypoints_only = false;
+  bool need_matcher = false;
+  std::vector<std::string> seeded_methods;
   for (const auto& m : cfg.methods) {  // fail early on a bad name
     if (std::find(known.begin(), known.end(), m) == known.end()) makeInitializer(m, cfg.method_settings);
-    need_models = need_models || methodNeedsModels(m);
+    if (methodNeedsModels(m)) seeded_methods.push_back(m);
     need_matcher = need_matcher || methodNeedsMatcher(m);
-    keypoints_only = keypoints_only || methodNeedsKeypointsOnly(m);
   }
   struct Job {
     World world;
@@ -64,17 +64,25 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     const World w = readWorld(cfg.world_files[wi]);
     const auto map = loadOccupancyMap(w.map_path).grid;
     const auto lidars = cfg.lidars.empty() ? std::vector<std::string>{w.default_lidar_profile} : cfg.lidars;
-    MethodResources res;
-    if (need_models) {
-      const auto models = (std::filesystem::path(cfg.method_settings.models_root) / w.name).string();
-      const auto& rp = cfg.method_settings.relocalizer;
-      res.relocalizer = std::make_shared<Relocalizer>(models, *map, rp, readZonesYaml(w.zones_path));
-      if (keypoints_only) res.keypoints_only_relocalizer = std::make_shared<Relocalizer>(models, *map, rp);
-      log << "krp-bench: " << w.name << ": models " << models << " (lidar " << res.relocalizer->manifest().lidar_name
-          << "; zone search " << (res.relocalizer->hasZoneSearch() ? "on" : "off") << ")\n";
+    std::shared_ptr<const MatcherRelocalizer> matcher;
+    if (need_matcher) matcher = std::make_shared<MatcherRelocalizer>(*map, cfg.method_settings.matcher);
+    for (size_t li = 0; li < lidars.size(); ++li) {
+      MethodResources res;
+      res.matcher = matcher;
+      if (!seeded_methods.empty()) {
+        const auto models = modelsFolder(cfg.method_settings.models_root, w, lidars[li]);
+        const auto zones = readZonesYaml(w.zones_path);
+        for (const auto& m : seeded_methods) {
+          const auto rp = relocalizerParamsFor(m, cfg.method_settings.relocalizer);
+          res.relocalizers[m] = methodUsesZoneSearch(m) ? std::make_shared<Relocalizer>(models, *map, rp, zones)
+                                                        : std::make_shared<Relocalizer>(models, *map, rp);
+        }
+        const auto& r = *res.relocalizers.begin()->second;
+        log << "krp-bench: " << w.name << " / " << lidars[li] << ": models " << models << " (lidar "
+            << r.manifest().lidar_name << ")\n";
+      }
+      jobs.push_back({w, map, w.lidar(lidars[li]), wi, li, res});
     }
-    if (need_matcher) res.matcher = std::make_shared<MatcherRelocalizer>(*map, cfg.method_settings.matcher);
-    for (size_t li = 0; li < lidars.size(); ++li) jobs.push_back({w, map, w.lidar(lidars[li]), wi, li, res});
   }
   log << "krp-bench: base seed " << cfg.seed << "; " << jobs.size() << " world/lidar pair(s) x " << cfg.methods.size()
       << " method(s) x " << cfg.trials << " trial(s)\n";

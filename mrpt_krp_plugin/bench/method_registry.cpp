@@ -1,20 +1,43 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/bench/method_registry.h"
 
+#include <filesystem>
+
 #include "mrpt_krp_plugin/common/input_error.h"
 
 namespace krp {
 
 std::vector<std::string> methodNames() {
-  return {"uniform-mcl", "amcl-kld", "amcl-kld-50k", "seeded", "seeded-no-uniform", "seeded-keypoints-only",
-          "global-matcher"};
+  return {"uniform-mcl",           "amcl-kld",       "amcl-kld-50k", "seeded", "seeded-no-uniform", "seeded-no-cross-check",
+          "seeded-keypoints-only", "global-matcher"};
 }
 
-bool methodNeedsKeypointsOnly(const std::string& name) { return name == "seeded-keypoints-only"; }
+namespace {
+constexpr const char* kKeypointsOnly = "seeded-keypoints-only";
+constexpr const char* kNoCrossCheck = "seeded-no-cross-check";
+}  // namespace
+
 bool methodNeedsModels(const std::string& name) {
-  return name == "seeded" || name == "seeded-no-uniform" || methodNeedsKeypointsOnly(name);
+  return name == "seeded" || name == "seeded-no-uniform" || name == kNoCrossCheck || name == kKeypointsOnly;
+}
+bool methodUsesZoneSearch(const std::string& name) { return methodNeedsModels(name) && name != kKeypointsOnly; }
+
+RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParams base) {
+  if (name == kKeypointsOnly || name == kNoCrossCheck) base.cross_check.enabled = false;
+  if (name == kKeypointsOnly) base.zone_search.zones = 0;
+  return base;
 }
 bool methodNeedsMatcher(const std::string& name) { return name == "global-matcher"; }
+
+std::string modelsFolder(const std::string& root, const World& world, const std::string& lidar) {
+  const std::string name = lidar == world.default_lidar_profile ? world.name : world.name + "_" + lidar;
+  const auto folder = (std::filesystem::path(root) / name).string();
+  if (!std::filesystem::exists(std::filesystem::path(folder) / "manifest.json"))
+    throw InputError(folder, "no models of world '" + world.name + "' for lidar '" + lidar + "' (no manifest.json): " +
+                                 "train them with krp-train-map --world " + world.name + " --lidar " + lidar + " --out " +
+                                 folder);
+  return folder;
+}
 
 std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& s,
                                                      const MethodResources& resources) {
@@ -28,7 +51,8 @@ std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, co
   SeededInitParams seeded = s.seeded;
   seeded.fallback = s.uniform;
   if (methodNeedsModels(name)) {
-    const auto relocalizer = methodNeedsKeypointsOnly(name) ? resources.keypoints_only_relocalizer : resources.relocalizer;
+    const auto found = resources.relocalizers.find(name);
+    const auto relocalizer = found == resources.relocalizers.end() ? nullptr : found->second;
     if (!relocalizer) throw InputError("method '" + name + "'", "needs trained models (a models folder with manifest.json)");
     if (name == "seeded-no-uniform") seeded.uniform_fraction = 0.0;
     return std::make_shared<SeededInitializer>(

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "mrpt_krp_plugin/filter/uniform_initializer.h"
 #include "mrpt_krp_plugin/relocalize/matcher_relocalizer.h"
 #include "mrpt_krp_plugin/relocalize/relocalizer.h"
+#include "mrpt_krp_plugin/sim/world.h"
 
 namespace krp {
 
@@ -20,31 +22,38 @@ struct MethodSettings {
   std::size_t amcl_high_max_particles = 50000;  ///< `amcl-kld-50k`: amcl with a raised max
   SeededInitParams seeded;
   RelocalizerParams relocalizer;
-  /// The seeded methods read `<models_root>/<world name>/manifest.json` (krp-train-map's output).
+  /// The seeded methods read their models from modelsFolder() under this (krp-train-map's output).
   std::string models_root = "models";
   MatcherRelocalizerParams matcher;
 };
 
-/// What some methods need built once per map: the learned relocalizer (seeded methods; with the
-/// zones' outlines, so with its zone search), the same without zone search
-/// (`seeded-keypoints-only`) and the global correlative matcher (`global-matcher`).
+/// What some methods need built once per map: the learned relocalizer of each seeded method
+/// (made with relocalizerParamsFor(), and with the zones' outlines where it uses them) and the
+/// global correlative matcher (`global-matcher`).
 struct MethodResources {
-  std::shared_ptr<const Relocalizer> relocalizer;
+  std::map<std::string, std::shared_ptr<const Relocalizer>> relocalizers;  ///< by method name
   std::shared_ptr<const MatcherRelocalizer> matcher;
-  std::shared_ptr<const Relocalizer> keypoints_only_relocalizer;
 };
 
 /// The method names: `uniform-mcl`, `amcl-kld`, `amcl-kld-50k`, `seeded`, `seeded-no-uniform`,
-/// `seeded-keypoints-only` (what the two models and the verification achieve on their own, with
-/// no zone search), `global-matcher`.
+/// `seeded-no-cross-check` (no check of a credible keypoint answer for look-alike places),
+/// `seeded-keypoints-only` (what the two models and the verification achieve on their own: no
+/// zone search, no cross-check), `global-matcher`.
 std::vector<std::string> methodNames();
 
 /// Whether the method needs trained models (a Relocalizer).
 bool methodNeedsModels(const std::string& name);
-/// Whether it needs the relocalizer without zone search (MethodResources::keypoints_only_relocalizer).
-bool methodNeedsKeypointsOnly(const std::string& name);
+/// Whether its relocalizer searches zones, so needs the zones' outlines.
+bool methodUsesZoneSearch(const std::string& name);
+/// The relocalizer parameters of a seeded method: `base` with what the method turns off.
+RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParams base);
 /// Whether the method needs the global matcher.
 bool methodNeedsMatcher(const std::string& name);
+
+/// Where the seeded methods find a world's models for a lidar: `<root>/<world>` for the world's
+/// default lidar, `<root>/<world>_<lidar>` for another (krp-train-map --world W --lidar L --out
+/// <root>/W_L). InputError naming the folder and the training command when it holds no models.
+std::string modelsFolder(const std::string& root, const World& world, const std::string& lidar);
 
 /// A fresh initializer for a method; InputError listing the names for an unknown one, or for a
 /// method whose resources are missing.

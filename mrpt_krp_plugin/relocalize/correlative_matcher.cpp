@@ -89,8 +89,45 @@ cv::Mat CorrelativeMatcher::regionOf(const std::vector<Zone>& zones) const {
   return region;
 }
 
+std::vector<mrpt::math::TPoint2D> CorrelativeMatcher::returns(const mrpt::obs::CObservation2DRangeScan& scan) const {
+  std::vector<mrpt::math::TPoint2D> points;
+  const mrpt::poses::CPose2D sensor(scan.sensorPose);
+  for (const auto& b : scanBeams(scan).beams) {
+    if (!b.hit) continue;
+    const auto p = sensor + mrpt::poses::CPose2D(b.range_m * std::cos(b.angle_rad), b.range_m * std::sin(b.angle_rad), 0);
+    points.emplace_back(p.x(), p.y());
+  }
+  if (static_cast<int>(points.size()) > params_.max_points) {
+    std::vector<mrpt::math::TPoint2D> kept;
+    for (int i = 0; i < params_.max_points; ++i) kept.push_back(points[i * points.size() / params_.max_points]);
+    points.swap(kept);
+  }
+  return points;
+}
+
+CorrelativeMatcher::Rotation CorrelativeMatcher::rotate(const std::vector<mrpt::math::TPoint2D>& points, double phi) const {
+  Rotation r{phi, {}};
+  const double res = params_.resolution_m, c = std::cos(phi), s = std::sin(phi);
+  for (const auto& p : points)
+    r.offsets.emplace_back(static_cast<int>(std::floor(0.5 + (c * p.x - s * p.y) / res)),
+                           static_cast<int>(std::floor(0.5 + (s * p.x + c * p.y) / res)));
+  return r;
+}
+
+double CorrelativeMatcher::scoreAt(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose) const {
+  const auto points = returns(scan);
+  if (points.size() < 3) return 0.0;
+  const int cx = static_cast<int>(std::floor((pose.x - x_min_) / params_.resolution_m));
+  const int cy = static_cast<int>(std::floor((pose.y - y_min_) / params_.resolution_m));
+  const long long nodes = nodes_scored_;
+  const double score = bound(rotate(points, pose.phi), cx, cy, 0);
+  nodes_scored_ = nodes;  // not part of any search's cost
+  return score;
+}
+
 std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservation2DRangeScan& scan,
-                                                     const cv::Mat& region) const {
+                                                     const MatchRequest& request) const {
+  const cv::Mat& region = request.region;
   nodes_scored_ = 0;
   if (!region.empty() && (region.size() != free_.size() || region.type() != CV_8U))
     throw std::invalid_argument("CorrelativeMatcher::match: region not made by regionOf() for this map");
@@ -103,42 +140,25 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
     return region_sum.at<int>(y1, x1) - region_sum.at<int>(cy, x1) - region_sum.at<int>(y1, cx) +
                region_sum.at<int>(cy, cx) > 0;
   };
-  const auto beams = scanBeams(scan);
-  std::vector<mrpt::math::TPoint2D> points;  // robot frame
-  const mrpt::poses::CPose2D sensor(scan.sensorPose);
-  for (const auto& b : beams.beams) {
-    if (!b.hit) continue;
-    const auto p = sensor + mrpt::poses::CPose2D(b.range_m * std::cos(b.angle_rad), b.range_m * std::sin(b.angle_rad), 0);
-    points.emplace_back(p.x(), p.y());
-  }
+  const auto points = returns(scan);
   if (points.size() < 3) return {};
-  if (static_cast<int>(points.size()) > params_.max_points) {
-    std::vector<mrpt::math::TPoint2D> kept;
-    for (int i = 0; i < params_.max_points; ++i) kept.push_back(points[i * points.size() / params_.max_points]);
-    points.swap(kept);
-  }
   const double res = params_.resolution_m;
   std::vector<Rotation> rotations;
   const int n_rot = std::max(1, static_cast<int>(std::lround(360.0 / params_.angular_step_deg)));
-  for (int k = 0; k < n_rot; ++k) {
-    Rotation r{-M_PI + 2.0 * M_PI * k / n_rot, {}};
-    const double c = std::cos(r.phi), s = std::sin(r.phi);
-    for (const auto& p : points)
-      r.offsets.emplace_back(static_cast<int>(std::floor(0.5 + (c * p.x - s * p.y) / res)),
-                             static_cast<int>(std::floor(0.5 + (s * p.x + c * p.y) / res)));
-    rotations.push_back(std::move(r));
-  }
+  for (int k = 0; k < n_rot; ++k) rotations.push_back(rotate(points, -M_PI + 2.0 * M_PI * k / n_rot));
 
   std::vector<MatchSolution> out;
   const int top = params_.depth, step = 1 << top;
-  for (int sol = 0; sol < params_.solutions; ++sol) {
+  for (int sol = 0; sol < request.solutions.value_or(params_.solutions); ++sol) {
     auto excluded = [&](int cx, int cy) {
       const double x = x_min_ + (cx + 0.5) * res, y = y_min_ + (cy + 0.5) * res;
       for (const auto& o : out)
         if (std::hypot(o.pose.x - x, o.pose.y - y) < params_.exclusion_m) return true;
+      for (const auto& p : request.excluded)
+        if (std::hypot(p.x - x, p.y - y) < params_.exclusion_m) return true;
       return false;
     };
-    MatchSolution best{{}, params_.min_score};
+    MatchSolution best{{}, request.min_score.value_or(params_.min_score)};
     bool found = false;
     for (const auto& rot : rotations) {
       std::vector<Node> roots;

@@ -6,6 +6,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <opencv2/core.hpp>
 
+#include <optional>
 #include <vector>
 
 #include "mrpt_krp_plugin/zones/zone.h"
@@ -25,6 +26,16 @@ struct CorrelativeMatcherParams {
   double min_freeness = 0.6;       ///< the robot's own cell must be at least this free [0..1]
 };
 
+/// What one match() looks for; every field left empty keeps the parameters' choice.
+struct MatchRequest {
+  cv::Mat region;  ///< from regionOf(): only poses inside it; empty = the whole map
+  /// Replaces CorrelativeMatcherParams::min_score: a high one (what a known pose already scores)
+  /// prunes most of the search, which is what makes checking an answer for look-alikes cheap.
+  std::optional<double> min_score;
+  std::optional<int> solutions;                  ///< replaces CorrelativeMatcherParams::solutions
+  std::vector<mrpt::math::TPoint2D> excluded;    ///< no solution within exclusion_m of these
+};
+
 struct MatchSolution {
   mrpt::math::TPose2D pose;  ///< robot pose in the map frame, on the search grid
   double score = 0.0;        ///< mean return score [0..1]
@@ -41,9 +52,13 @@ class CorrelativeMatcher {
   /// The search grid's cells inside any of `zones` (CV_8U, 1 = searched): a region for match().
   cv::Mat regionOf(const std::vector<Zone>& zones) const;
 
-  /// Best first; empty when nothing scores min_score. With a `region` from regionOf(), only poses
-  /// inside it are considered, and whole branches outside it are skipped unscored.
-  std::vector<MatchSolution> match(const mrpt::obs::CObservation2DRangeScan& scan, const cv::Mat& region = cv::Mat()) const;
+  /// Best first; empty when nothing scores min_score. With a region, whole branches outside it
+  /// are skipped unscored.
+  std::vector<MatchSolution> match(const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request = {}) const;
+
+  /// The score match() gives `pose` (same returns, same grid), without searching: how well the
+  /// scan fits there in the matcher's own units.
+  double scoreAt(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose) const;
 
   /// Nodes whose bound was computed in the last match() (a measure of its cost).
   long long lastNodesScored() const { return nodes_scored_; }
@@ -53,6 +68,9 @@ class CorrelativeMatcher {
     double phi;
     std::vector<cv::Point> offsets;  ///< each return's cell offset from the robot's cell
   };
+  /// The scan's returns in the robot frame, evenly decimated to max_points.
+  std::vector<mrpt::math::TPoint2D> returns(const mrpt::obs::CObservation2DRangeScan& scan) const;
+  Rotation rotate(const std::vector<mrpt::math::TPoint2D>& points, double phi) const;
   double bound(const Rotation& r, int cx, int cy, int level) const;
   bool robotCellFree(int cx, int cy) const { return free_.at<uint8_t>(cy, cx) != 0; }
 

@@ -44,6 +44,7 @@ nlohmann::json relocalizationJson(const RelocalizationResult& r, const std::vect
   j["detections"] = r.detections;
   j["candidates"] = r.candidates;
   j["zone_search"] = {{"used", r.zone_search_used}, {"candidates", r.zone_search_candidates}};
+  j["cross_check"] = {{"used", r.cross_check_used}, {"candidates", r.cross_check_candidates}};
   j["hypotheses"] = nlohmann::json::array();
   for (const auto& h : r.ranking.hypotheses) {
     std::vector<double> cov;
@@ -58,7 +59,7 @@ nlohmann::json relocalizationJson(const RelocalizationResult& r, const std::vect
   const auto& t = r.times;
   j["times_ms"] = {{"submap", t.submap_ms}, {"classifier", t.classifier_ms}, {"keypoints", t.keypoints_ms},
                    {"alignment", t.alignment_ms}, {"verification", t.verification_ms}, {"zone_search", t.zone_search_ms},
-                   {"total", t.total_ms}};
+                   {"cross_check", t.cross_check_ms}, {"total", t.total_ms}};
   return j;
 }
 
@@ -72,6 +73,9 @@ std::string relocalizationText(const RelocalizationResult& r, const std::vector<
   if (r.zone_search_used)
     o << "zone search (the keypoints gave no credible pose): " << r.zone_search_candidates << " pose(s) from the matcher, "
       << r.times.zone_search_ms << " ms\n";
+  if (r.cross_check_used)
+    o << "cross-check for look-alike places: " << r.cross_check_candidates << " other place(s) fit about as well, "
+      << r.times.cross_check_ms << " ms\n";
   for (size_t i = 0; i < r.ranking.hypotheses.size(); ++i) {
     const auto& h = r.ranking.hypotheses[i];
     o << "  #" << i + 1 << " x " << h.pose.x << " m, y " << h.pose.y << " m, yaw " << h.pose.phi * kRadToDeg

@@ -61,19 +61,20 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
       verifier_(map, params.verifier) {
   requireTrainingMapResolution(manifest_, map, params.map_resolution_tolerance_m);
   requireLandmarksInsideMap(manifest_, map);
+  if (params_.cross_check.enabled) matcher_.emplace(map, params_.matcher);
 }
 
 Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
                          RelocalizerParams params, const std::vector<Zone>& zones)
     : Relocalizer(models_dir, map, params) {
   if (params_.zone_search.zones <= 0) return;
-  zone_matcher_.emplace(map, params_.zone_search.matcher);
+  if (!matcher_) matcher_.emplace(map, params_.matcher);
   for (const auto& name : manifest_.zones) {
     const auto it = std::find_if(zones.begin(), zones.end(), [&](const Zone& z) { return z.name == name; });
     if (it == zones.end())
       throw InputError("zones", "no zone named '" + name + "', which the models in " + manifest_.folder +
                                     " were trained on: give the zones.yaml of their world '" + manifest_.world + "'");
-    zone_regions_.push_back(zone_matcher_->regionOf({*it}));
+    zone_regions_.push_back(matcher_->regionOf({*it}));
   }
 }
 
@@ -84,12 +85,25 @@ std::vector<PoseHypothesis> Relocalizer::zoneSearch(const mrpt::obs::CObservatio
   if (zones.empty()) return found;
   cv::Mat region = zone_regions_[zones.front()].clone();
   for (size_t i = 1; i < zones.size(); ++i) cv::bitwise_or(region, zone_regions_[zones[i]], region);
-  for (const auto& s : zone_matcher_->match(scan, region)) {
-    PoseHypothesis h = hypothesisFromMatch(s, params_.zone_search.matcher);
+  for (const auto& s : matcher_->match(scan, {region})) {
+    PoseHypothesis h = hypothesisFromMatch(s, params_.matcher);
     h.zone = zones.front();
     h.zone_probability = zone_probabilities[zones.front()];
     found.push_back(h);
   }
+  return found;
+}
+
+std::vector<PoseHypothesis> Relocalizer::crossCheck(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                    const PoseHypothesis& answer) const {
+  const double bar = matcher_->scoreAt(scan, answer.pose) - params_.cross_check.score_margin;
+  MatchRequest request;
+  request.min_score = std::max(bar, params_.matcher.min_score);
+  request.solutions = params_.cross_check.places;
+  request.excluded = {{answer.pose.x, answer.pose.y}};  // the answer found again is no alternative to it
+  std::vector<PoseHypothesis> found;
+  for (const auto& s : matcher_->match(scan, request))
+    found.push_back(hypothesisFromMatch(s, params_.matcher));  // zone unknown: the place is what counts
   return found;
 }
 
@@ -172,14 +186,23 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
   r.ranking = verifier_.rank(scored);
   r.times.verification_ms = msSince(t);
 
-  if (!r.ranking.localized && zone_matcher_) {
+  if (!r.ranking.localized && hasZoneSearch()) {
     t = Clock::now();
     auto found = verifier_.refineAndScore(scan, zoneSearch(scan, r.zone_probabilities));
     r.zone_search_used = true;
     r.zone_search_candidates = static_cast<int>(found.size());
     scored.insert(scored.end(), found.begin(), found.end());
-    r.ranking = verifier_.rank(std::move(scored));
+    r.ranking = verifier_.rank(scored);
     r.times.zone_search_ms = msSince(t);
+  }
+  if (r.ranking.localized && params_.cross_check.enabled) {
+    t = Clock::now();
+    auto found = verifier_.refineAndScore(scan, crossCheck(scan, r.ranking.hypotheses.front()));
+    r.cross_check_used = true;
+    r.cross_check_candidates = static_cast<int>(found.size());
+    scored.insert(scored.end(), found.begin(), found.end());
+    r.ranking = verifier_.rank(std::move(scored));
+    r.times.cross_check_ms = msSince(t);
   }
   r.times.total_ms = msSince(start);
   return r;

@@ -26,7 +26,24 @@ struct ZoneSearchParams {
   /// The classifier's most likely zones searched (0 = no zone search); the others stay the
   /// keypoints' business.
   int zones = 1;
-  CorrelativeMatcherParams matcher;
+};
+
+/// A check of a credible keypoint answer for look-alike places. The keypoints propose poses only
+/// where the models recognise landmarks; when they align to a look-alike (the other wing of a
+/// mirror-like building), verification finds nothing wrong with the answer, and the true pose
+/// was never proposed. The matcher then searches the whole map with the answer's own score as
+/// the bar: branches that cannot reach it are pruned unscored, so the check costs a fraction of
+/// a global search. What it finds is verified and ranked beside the answer: a better place wins,
+/// an equal one splits the confidence ("not localized" rather than a confident wrong pose).
+struct CrossCheckParams {
+  bool enabled = true;
+  /// Places scoring up to this much below the answer are still proposed (matcher score, 0..1):
+  /// the answer is ICP-refined and the matcher's poses lie on its grid, so equal places may
+  /// score a little apart.
+  double score_margin = 0.05;
+  /// Other places looked for, each at least the matcher's exclusion_m from the answer and from
+  /// each other (each one is another branch-and-bound pass).
+  int places = 1;
 };
 
 struct RelocalizerParams {
@@ -45,6 +62,8 @@ struct RelocalizerParams {
   KeypointHypothesesParams keypoints;
   PoseVerifierParams verifier;
   ZoneSearchParams zone_search;
+  CrossCheckParams cross_check;
+  CorrelativeMatcherParams matcher;  ///< for the zone search and the cross-check
   OnnxRuntimeParams onnx;
   /// A scan whose field of view differs from the manifest's lidar by more than this is refused:
   /// the models never saw such submaps [deg].
@@ -59,6 +78,7 @@ struct RelocalizerParams {
 struct RelocalizationTimes {
   double submap_ms = 0, classifier_ms = 0, keypoints_ms = 0, alignment_ms = 0, verification_ms = 0;
   double zone_search_ms = 0;  ///< the zone search, the scoring of its poses and the re-ranking, when they ran
+  double cross_check_ms = 0;  ///< the same for the cross-check
   double total_ms = 0;
 };
 
@@ -70,13 +90,16 @@ struct RelocalizationResult {
   int candidates = 0;                     ///< poses proposed by the alignment
   bool zone_search_used = false;          ///< the keypoints gave no credible pose and the zone search ran
   int zone_search_candidates = 0;         ///< poses it proposed
+  bool cross_check_used = false;          ///< the keypoints' answer was credible and was cross-checked
+  int cross_check_candidates = 0;         ///< other places the cross-check proposed
   RelocalizationTimes times;
 };
 
 /// One scan -> submap (one heading-up, or four wall-aligned turns) -> zone probabilities ->
 /// keypoints on the top zones of the top turns -> robust SE(2) alignment to the zones' landmarks
 /// -> ICP and scan-fit verification against the map; when that leaves nothing credible and the
-/// zones' outlines are known, a correlative search of the most likely zones (ZoneSearchParams).
+/// zones' outlines are known, a correlative search of the most likely zones (ZoneSearchParams);
+/// when it gives a credible answer, a check of the map for look-alikes (CrossCheckParams).
 class Relocalizer {
  public:
   /// Loads `<models_dir>/manifest.json` and both models. InputError when the models or the
@@ -94,19 +117,20 @@ class Relocalizer {
 
   const ModelManifest& manifest() const { return manifest_; }
   const PoseVerifier& verifier() const { return verifier_; }
-  bool hasZoneSearch() const { return zone_matcher_.has_value(); }
+  bool hasZoneSearch() const { return !zone_regions_.empty(); }
 
  private:
   void requireTrainingLidar(const mrpt::obs::CObservation2DRangeScan& scan) const;
   std::vector<PoseHypothesis> zoneSearch(const mrpt::obs::CObservation2DRangeScan& scan,
                                          const std::vector<float>& zone_probabilities) const;
+  std::vector<PoseHypothesis> crossCheck(const mrpt::obs::CObservation2DRangeScan& scan, const PoseHypothesis& answer) const;
 
   RelocalizerParams params_;
   ModelManifest manifest_;
   ZoneClassifier classifier_;
   KeypointDetector detector_;
   PoseVerifier verifier_;
-  std::optional<CorrelativeMatcher> zone_matcher_;
+  std::optional<CorrelativeMatcher> matcher_;  ///< when the zone search or the cross-check may run
   std::vector<cv::Mat> zone_regions_;  ///< the matcher's search region of each zone, manifest order
 };
 

@@ -83,7 +83,7 @@ TEST(CorrelativeMatcher, ARegionKeepsTheSearchInsideIt) {
   const Zone east{"east", {{4.5, 0.0}, {9.0, 0.0}, {9.0, 7.0}, {4.5, 7.0}}};
   for (const auto& [zone, expected_x, expected_y] :
        {std::tuple{west, 3.0, 2.5}, std::tuple{east, 9.0 - 3.0, 7.0 - 2.5}}) {
-    const auto sols = matcher.match(*scan, matcher.regionOf({zone}));
+    const auto sols = matcher.match(*scan, {matcher.regionOf({zone})});
     ASSERT_FALSE(sols.empty()) << zone.name;
     EXPECT_NEAR(sols[0].pose.x, expected_x, 0.2) << zone.name;
     EXPECT_NEAR(sols[0].pose.y, expected_y, 0.2) << zone.name;
@@ -91,7 +91,41 @@ TEST(CorrelativeMatcher, ARegionKeepsTheSearchInsideIt) {
     EXPECT_LT(matcher.lastNodesScored(), whole_nodes) << zone.name;
   }
   ASSERT_FALSE(whole.empty());
-  EXPECT_THROW(matcher.match(*scan, cv::Mat::ones(3, 3, CV_8U)), std::invalid_argument);
+  EXPECT_THROW(matcher.match(*scan, {cv::Mat::ones(3, 3, CV_8U)}), std::invalid_argument);
+}
+
+// scoreAt is match()'s own score at a pose; a minimum score that high prunes the search to what
+// can beat it, which makes checking a known answer for look-alikes cheap.
+TEST(CorrelativeMatcher, AKnownScoreBoundsTheSearch) {
+  FloorPlan plan(9.0, 7.0, 0.05);
+  plan.building(0.5, 0.5, 8.5, 6.5);
+  const auto map = plan.toGrid();
+  const CorrelativeMatcher matcher(map);
+  const auto scan = scanAt(map, mrpt::poses::CPose2D(3.0, 2.5, 0.3));
+  const auto open = matcher.match(*scan);
+  const long long open_nodes = matcher.lastNodesScored();
+  ASSERT_EQ(open.size(), 2u);
+  EXPECT_DOUBLE_EQ(matcher.scoreAt(*scan, open[0].pose), open[0].score);
+  EXPECT_LT(matcher.scoreAt(*scan, {open[0].pose.x + 1.0, open[0].pose.y, open[0].pose.phi}), 0.8 * open[0].score);
+
+  MatchRequest bounded;
+  bounded.min_score = matcher.scoreAt(*scan, open[0].pose) - 0.05;
+  const auto found = matcher.match(*scan, bounded);
+  EXPECT_LT(matcher.lastNodesScored(), open_nodes / 2) << "a high minimum should prune most of the search";
+  ASSERT_EQ(found.size(), 2u) << "the 180 deg twin scores as well as the answer";
+  EXPECT_DOUBLE_EQ(found[0].score, open[0].score);
+
+  // Excluding the answer leaves its twin as the one other place, in one pass.
+  bounded.excluded = {{open[0].pose.x, open[0].pose.y}};
+  bounded.solutions = 1;
+  const auto others = matcher.match(*scan, bounded);
+  ASSERT_EQ(others.size(), 1u);
+  EXPECT_NEAR(others[0].pose.x, open[1].pose.x, 1e-9);
+  EXPECT_NEAR(others[0].pose.y, open[1].pose.y, 1e-9);
+
+  bounded = {};
+  bounded.min_score = open[0].score + 0.01;
+  EXPECT_TRUE(matcher.match(*scan, bounded).empty()) << "nothing beats the best";
 }
 
 }  // namespace
