@@ -72,6 +72,7 @@ const std::map<std::string, Reader>& readers() {
       {"models_dir", string(&NodeParams::models_dir)},
       {"zones_file", string(&NodeParams::zones_file)},
       {"calibration_file", string(&NodeParams::calibration_file)},
+      {"cross_check", boolean(&NodeParams::cross_check)},
       {"relocalize_on_startup", boolean(&NodeParams::relocalize_on_startup)},
       {"relocalize_on_kidnap", boolean(&NodeParams::relocalize_on_kidnap)},
       {"publish_when_not_localized", boolean(&NodeParams::publish_when_not_localized)},
@@ -126,6 +127,7 @@ HypothesisSourceParams NodeParams::hypothesisSource() const {
   h.backend = backend;
   h.models_dir = models_dir;
   h.zones_file = zones_file;
+  h.learned.cross_check.enabled = cross_check;
   if (!calibration_file.empty()) useConfidenceCalibration(readConfidenceCalibration(calibration_file), h.learned, h.matcher);
   return h;
 }
