@@ -7,13 +7,18 @@
 #   3. the same seed-7 trials with the calibration    -> reports/calibration/<world>/calibrated/REPORT.md
 # Each world runs alone, because trial seeds depend on a world's place in the run: 2 and 3 replay
 # the same trials. The reports' reliability tables bin the best hypothesis's confidence against
-# how often it was right. The learned relocalizer (`seeded`, shipped models + zone search) gets
+# how often it was right. The learned relocalizer (`seeded`: shipped models, zone search and
+# cross-check) gets
 # the same treatment on the worlds that have models, under reports/calibration/learned/
 # (~40 min on 2 cores in all, most of it the warehouse).
-# Usage: scripts/bench_calibration.sh [extra krp-bench flags]   (build first with scripts/build.sh)
+# Usage: scripts/bench_calibration.sh [matcher|learned|all] [extra krp-bench flags]
+# (build first with scripts/build.sh)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
+which="${1:-all}"
+[[ $# -gt 0 ]] && shift
+case "$which" in matcher|learned|all) ;; *) echo "usage: $0 [matcher|learned|all] [krp-bench flags]" >&2; exit 2;; esac
 bench=./build/mrpt_krp_plugin/apps/krp-bench
 extra=("$@")
 # fit on seed 11, then seed 7 raw and calibrated, for one world and relocalizer.
@@ -25,10 +30,14 @@ calibrate() {
   "$bench" --worlds "$w" "$@" --seed 7 --out "$reports/$w/raw" "${extra[@]}"
   "$bench" --worlds "$w" "$@" --seed 7 --out "$reports/$w/calibrated" --calibration "$reports/$w.calibration.yaml" "${extra[@]}"
 }
-for w in office_two_zone warehouse office_cluttered; do
-  calibrate reports/calibration out/calibration_fit "$w" --lidars omni_12m --methods global-matcher --trials 100 --steps 0
-done
-for w in office_two_zone warehouse; do
-  calibrate reports/calibration/learned out/calibration_fit/learned "$w" \
-    --lidars omni_12m --methods seeded --models-root models --trials 100 --steps 0
-done
+if [[ "$which" == all || "$which" == matcher ]]; then
+  for w in office_two_zone warehouse office_cluttered; do
+    calibrate reports/calibration out/calibration_fit "$w" --lidars omni_12m --methods global-matcher --trials 100 --steps 0
+  done
+fi
+if [[ "$which" == all || "$which" == learned ]]; then
+  for w in office_two_zone warehouse; do
+    calibrate reports/calibration/learned out/calibration_fit/learned "$w" \
+      --lidars omni_12m --methods seeded --models-root models --trials 100 --steps 0
+  done
+fi
