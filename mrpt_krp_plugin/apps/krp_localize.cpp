@@ -203,8 +203,9 @@ static int run(int argc, char** argv) {
                 {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform, seeded-no-cross-check, "
                  "seeded-keypoints-only or global-matcher", "amcl-kld"},
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
-                {"zones", "FILE", "seeded / single scan: the zones.yaml the models were trained on; when the keypoints "
-                 "give no credible pose, the classifier's most likely zone is searched by the correlative matcher", ""},
+                {"zones", "FILE", "seeded / single scan: the zones.yaml the models were trained on (default: the one "
+                 "beside the models when their manifest names it); when the keypoints give no credible pose, the "
+                 "classifier's most likely zone is searched by the correlative matcher", ""},
                 {"calibration", "FILE", "seeded / global-matcher: the map's confidence calibration (krp-bench "
                  "--fit-calibration), applied before the 'localized' threshold", ""},
                 {"single-scan", "STEP|all", "relocalize from this step's scan only: print the hypotheses, write "

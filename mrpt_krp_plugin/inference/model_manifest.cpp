@@ -126,6 +126,11 @@ ModelManifest readModelManifest(const std::string& folder) {
     }
     m.landmarks.push_back(std::move(pts));
   }
+  if (root.contains("zone_outlines") && !root["zone_outlines"].is_null()) {
+    m.zone_outlines_file = field<std::string>(root, "zone_outlines.file", file);
+    if (m.zone_outlines_file.empty() || m.zone_outlines_file.find('/') != std::string::npos)
+      throw InputError(file, "'zone_outlines.file' must be a file name in the manifest's folder");
+  }
   m.classifier = readModel(root, "classifier", file);
   m.keypoints = readModel(root, "keypoints", file);
   checkImageShape(m.classifier, 1, m.submap_size_px, "classifier", file);

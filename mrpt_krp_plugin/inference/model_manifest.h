@@ -41,6 +41,9 @@ struct ModelManifest {
   SubmapOrientation submap_orientation = SubmapOrientation::kHeadingUp;
   double sdt_clip_m = 0;
   std::vector<std::string> zones;
+  /// The zones.yaml the models were trained on, beside them (the zone search reads it); empty in
+  /// manifests written before krp-train-map copied it there.
+  std::string zone_outlines_file;
   /// landmarks[z][k]: map coordinates of zone z's k-th keypoint [m]
   std::vector<std::vector<mrpt::math::TPoint2D>> landmarks;
   ManifestModel classifier;
@@ -49,6 +52,7 @@ struct ModelManifest {
   int keypointsPerZone() const { return landmarks.empty() ? 0 : static_cast<int>(landmarks.front().size()); }
   std::string classifierPath() const { return folder + "/" + classifier.file; }
   std::string keypointsPath() const { return folder + "/" + keypoints.file; }
+  std::string zoneOutlinesPath() const { return zone_outlines_file.empty() ? "" : folder + "/" + zone_outlines_file; }
 };
 
 /// Reads `<folder>/manifest.json`. InputError naming the file and the field for a missing file,

@@ -14,6 +14,7 @@
 #include "mrpt_krp_plugin/submap/occupancy_image.h"
 #include "mrpt_krp_plugin/submap/sdt_image.h"
 #include "mrpt_krp_plugin/submap/submap_builder.h"
+#include "mrpt_krp_plugin/zones/zones_yaml.h"
 
 namespace krp {
 
@@ -62,11 +63,17 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
   requireTrainingMapResolution(manifest_, map, params.map_resolution_tolerance_m);
   requireLandmarksInsideMap(manifest_, map);
   if (params_.cross_check.enabled) matcher_.emplace(map, params_.matcher);
+  if (!manifest_.zone_outlines_file.empty()) enableZoneSearch(map, readZonesYaml(manifest_.zoneOutlinesPath()));
 }
 
 Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
                          RelocalizerParams params, const std::vector<Zone>& zones)
     : Relocalizer(models_dir, map, params) {
+  enableZoneSearch(map, zones);
+}
+
+void Relocalizer::enableZoneSearch(const mrpt::maps::COccupancyGridMap2D& map, const std::vector<Zone>& zones) {
+  zone_regions_.clear();
   if (params_.zone_search.zones <= 0) return;
   if (!matcher_) matcher_.emplace(map, params_.matcher);
   for (const auto& name : manifest_.zones) {

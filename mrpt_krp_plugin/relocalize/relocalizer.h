@@ -104,10 +104,12 @@ class Relocalizer {
  public:
   /// Loads `<models_dir>/manifest.json` and both models. InputError when the models or the
   /// manifest cannot be used, or do not fit `map`: another cell size than the map trained on, or
-  /// landmarks outside it. Without zones there is no zone search.
+  /// landmarks outside it. The zone search reads the zones the models were trained on from the
+  /// folder when the manifest names them (krp-train-map copies them there); without them there
+  /// is no zone search.
   Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map, RelocalizerParams params = {});
-  /// The same, with the outlines of the zones the models were trained on (zones.yaml), which
-  /// enables the zone search. InputError("zones", ...) when a manifest zone has no outline there.
+  /// The same, with the outlines of the zones the models were trained on (zones.yaml), used
+  /// instead of the folder's. InputError("zones", ...) when a manifest zone has no outline there.
   Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map, RelocalizerParams params,
               const std::vector<Zone>& zones);
 
@@ -121,6 +123,7 @@ class Relocalizer {
 
  private:
   void requireTrainingLidar(const mrpt::obs::CObservation2DRangeScan& scan) const;
+  void enableZoneSearch(const mrpt::maps::COccupancyGridMap2D& map, const std::vector<Zone>& zones);
   std::vector<PoseHypothesis> zoneSearch(const mrpt::obs::CObservation2DRangeScan& scan,
                                          const std::vector<float>& zone_probabilities) const;
   std::vector<PoseHypothesis> crossCheck(const mrpt::obs::CObservation2DRangeScan& scan, const PoseHypothesis& answer) const;

@@ -132,5 +132,17 @@ TEST_F(ManifestTest, RejectsAModelFileOutsideTheFolder) {
   EXPECT_THROW(readModelManifest(write(j)), InputError);
 }
 
+// Manifests written before krp-train-map copied the zones beside the models have none.
+TEST_F(ManifestTest, ZoneOutlinesAreOptionalAndStayInTheFolder) {
+  EXPECT_EQ(readModelManifest(write(validManifest())).zoneOutlinesPath(), "");
+  json j = validManifest();
+  j["zone_outlines"] = {{"file", "zones.yaml"}, {"sha256", "00"}};
+  EXPECT_EQ(readModelManifest(write(j)).zoneOutlinesPath(), dir_.string() + "/zones.yaml");
+  j["zone_outlines"]["file"] = "../zones.yaml";
+  EXPECT_THROW(readModelManifest(write(j)), InputError);
+  j["zone_outlines"] = {{"sha256", "00"}};
+  EXPECT_THROW(readModelManifest(write(j)), InputError);
+}
+
 }  // namespace
 }  // namespace krp

@@ -3,6 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
@@ -64,6 +68,27 @@ TEST(Relocalizer, RefusesZonesThatAreNotTheModels) {
   EXPECT_NE(message.find("no zone named 'east_wing'"), std::string::npos) << message;
   EXPECT_FALSE(Relocalizer(kModels, *map.grid).hasZoneSearch());
   EXPECT_TRUE(Relocalizer(kModels, *map.grid, {}, readZonesYaml(world.zones_path)).hasZoneSearch());
+}
+
+// krp-train-map copies the zones beside the models and names them in the manifest: the zone
+// search then needs no zones from the user. A named file that is missing is an error.
+TEST(Relocalizer, ReadsTheZonesBesideTheModels) {
+  namespace fs = std::filesystem;
+  const auto world = readWorld(kWorld);
+  const auto map = loadOccupancyMap(world.map_path);
+  const fs::path dir = fs::temp_directory_path() / ("krp_zones_beside_models_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::copy(kModels, dir, fs::copy_options::recursive);
+  nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "manifest.json"));
+  manifest["zone_outlines"] = {{"file", "zones.yaml"}, {"sha256", "not checked"}};
+  std::ofstream(dir / "manifest.json") << manifest.dump();
+  EXPECT_NE(messageOf([&] { Relocalizer(dir.string(), *map.grid); }).find("zones.yaml"), std::string::npos);
+  fs::copy_file(world.zones_path, dir / "zones.yaml");
+  EXPECT_TRUE(Relocalizer(dir.string(), *map.grid).hasZoneSearch());
+  RelocalizerParams off;
+  off.zone_search.zones = 0;
+  EXPECT_FALSE(Relocalizer(dir.string(), *map.grid, off).hasZoneSearch());
+  fs::remove_all(dir);
 }
 
 // With the keypoints switched off (no zone's detections used) only the zone search can answer:

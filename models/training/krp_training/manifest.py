@@ -35,7 +35,9 @@ def read_landmarks(landmarks_yaml: Path) -> dict:
 
 
 def build(card: dict, card_sha256: str, map_path: Path, landmarks: dict, classifier: dict, keypoints: dict,
-          training: dict) -> dict:
+          training: dict, zone_outlines: dict) -> dict:
+    """zone_outlines: {"file": the zones.yaml copied beside the models, "sha256": its hash}; the
+    runtime reads it for the zone search, so users need not pass the zones the models saw."""
     size_px = int(card["submap"]["size_px"])
     return {
         "format": FORMAT,
@@ -46,6 +48,7 @@ def build(card: dict, card_sha256: str, map_path: Path, landmarks: dict, classif
         "submap": card["submap"],
         "sdt_clip_m": card["sdt_clip_m"],
         "zones": card["zones"],
+        "zone_outlines": zone_outlines,
         "landmarks": landmarks,
         "classifier": {
             **classifier,

@@ -179,12 +179,15 @@ def main(argv=None) -> int:
     training = {"command": command, "device": device, "torch": torch.__version__,
                 "stage_seconds": dict(timer.seconds), "classifier_params": cls.params,
                 "keypoint_params": kpr.params}
+    # The zones the dataset was made with (given or automatic), for the runtime's zone search.
+    shutil.copyfile(dataset_dir / "zones.yaml", partial / "zones.yaml")
+    zone_outlines = {"file": "zones.yaml", "sha256": export.sha256(partial / "zones.yaml")}
     m = manifest.build(card, export.sha256(card_path), _map_path(args), landmarks,
                        {"file": "zone_classifier.onnx", "sha256": export.sha256(partial / "zone_classifier.onnx"),
                         "architecture": args.classifier, **cls_onnx, "metrics": cls_metrics},
                        {"file": "keypoints.onnx", "sha256": export.sha256(partial / "keypoints.onnx"),
                         "architecture": "yolov8n-pose", **kp_onnx, "metrics": kp_metrics},
-                       training)
+                       training, zone_outlines)
     shutil.copyfile(dataset_dir / "DATASET_CARD.md", partial / "DATASET_CARD.md")
     shutil.copyfile(dataset_dir / "preview.png", partial / "figures" / "dataset_preview.png")
     # Written once, after every stage, so the manifest and report carry all the stage times.

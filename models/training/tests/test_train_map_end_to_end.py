@@ -22,6 +22,9 @@ def test_tiny_train_and_export(tmp_path, bin_dir):
     assert m["keypoints"]["kpt_shape"] == [12, 3]
     assert m["classifier"]["ir_version"] <= 10 and m["keypoints"]["ir_version"] <= 10
     assert len(m["landmarks"]["zones"][0]["points"]) == 12
+    # The zones the dataset was made with sit beside the models, for the runtime's zone search.
+    assert m["zone_outlines"]["file"] == "zones.yaml"
+    assert "west_wing" in (out / "zones.yaml").read_text()
     assert "krp-train-map --world office_two_zone" in m["training"]["command"]
     assert set(m["training"]["stage_seconds"]) >= {"dataset", "classifier", "keypoints", "export", "evaluate"}
 
