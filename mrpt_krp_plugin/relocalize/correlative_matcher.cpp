@@ -29,8 +29,8 @@ CorrelativeMatcher::CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& ma
   // Obstacles and free space resampled onto the search grid (getPos is p(free)).
   cv::Mat not_obstacle(h, w, CV_8U, cv::Scalar(255));
   free_ = cv::Mat::zeros(h, w, CV_8U);
-  for (int cy = 0; cy < map.getSizeY(); ++cy) {
-    for (int cx = 0; cx < map.getSizeX(); ++cx) {
+  for (int cy = 0; cy < static_cast<int>(map.getSizeY()); ++cy) {
+    for (int cx = 0; cx < static_cast<int>(map.getSizeX()); ++cx) {
       const int gx = std::min(w - 1, static_cast<int>((map.idx2x(cx) - x_min_) / res));
       const int gy = std::min(h - 1, static_cast<int>((map.idx2y(cy) - y_min_) / res));
       const double p_free = map.getCell(cx, cy);

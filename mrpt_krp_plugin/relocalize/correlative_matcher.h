@@ -34,6 +34,13 @@ struct MatchRequest {
   std::optional<double> min_score;
   std::optional<int> solutions;                  ///< replaces CorrelativeMatcherParams::solutions
   std::vector<mrpt::math::TPoint2D> excluded;    ///< no solution within exclusion_m of these
+
+  /// Only poses inside `region`, everything else as the parameters say.
+  static MatchRequest within(const cv::Mat& region) {
+    MatchRequest r;
+    r.region = region;
+    return r;
+  }
 };
 
 struct MatchSolution {

@@ -92,7 +92,7 @@ std::vector<PoseHypothesis> Relocalizer::zoneSearch(const mrpt::obs::CObservatio
   if (zones.empty()) return found;
   cv::Mat region = zone_regions_[zones.front()].clone();
   for (size_t i = 1; i < zones.size(); ++i) cv::bitwise_or(region, zone_regions_[zones[i]], region);
-  for (const auto& s : matcher_->match(scan, {region})) {
+  for (const auto& s : matcher_->match(scan, MatchRequest::within(region))) {
     PoseHypothesis h = hypothesisFromMatch(s, params_.matcher);
     h.zone = zones.front();
     h.zone_probability = zone_probabilities[zones.front()];

@@ -34,7 +34,9 @@ TEST(CorrelativeMatcher, FindsThePoseOverTheWholeMap) {
   EXPECT_LT(std::abs(mrpt::math::wrapToPi(sols[0].pose.phi - truth.phi())), 2.5 * M_PI / 180.0);
   EXPECT_GT(sols[0].score, 0.7);
   // Its 180 deg twin explains most of the walls; only the L wall and the block tell them apart.
-  if (sols.size() > 1) EXPECT_LT(sols[1].score, 0.9 * sols[0].score) << "the room has no symmetry";
+  if (sols.size() > 1) {
+    EXPECT_LT(sols[1].score, 0.9 * sols[0].score) << "the room has no symmetry";
+  }
 }
 
 TEST(CorrelativeMatcher, BranchAndBoundFindsWhatExhaustiveSearchFinds) {
@@ -83,7 +85,7 @@ TEST(CorrelativeMatcher, ARegionKeepsTheSearchInsideIt) {
   const Zone east{"east", {{4.5, 0.0}, {9.0, 0.0}, {9.0, 7.0}, {4.5, 7.0}}};
   for (const auto& [zone, expected_x, expected_y] :
        {std::tuple{west, 3.0, 2.5}, std::tuple{east, 9.0 - 3.0, 7.0 - 2.5}}) {
-    const auto sols = matcher.match(*scan, {matcher.regionOf({zone})});
+    const auto sols = matcher.match(*scan, MatchRequest::within(matcher.regionOf({zone})));
     ASSERT_FALSE(sols.empty()) << zone.name;
     EXPECT_NEAR(sols[0].pose.x, expected_x, 0.2) << zone.name;
     EXPECT_NEAR(sols[0].pose.y, expected_y, 0.2) << zone.name;
@@ -91,7 +93,7 @@ TEST(CorrelativeMatcher, ARegionKeepsTheSearchInsideIt) {
     EXPECT_LT(matcher.lastNodesScored(), whole_nodes) << zone.name;
   }
   ASSERT_FALSE(whole.empty());
-  EXPECT_THROW(matcher.match(*scan, {cv::Mat::ones(3, 3, CV_8U)}), std::invalid_argument);
+  EXPECT_THROW(matcher.match(*scan, MatchRequest::within(cv::Mat::ones(3, 3, CV_8U))), std::invalid_argument);
 }
 
 // scoreAt is match()'s own score at a pose; a minimum score that high prunes the search to what

@@ -132,7 +132,7 @@ TEST(Relocalizer, ZoneSearchAnswersWhenTheKeypointsGiveNothing) {
 // verification alone finds nothing wrong there. The cross-check searches the map for a place
 // that fits as well: it turns such answers right or "not localized", and makes no right answer
 // wrong. Of trial seeds 0-79, the first five below are those where the keypoints alone were
-// localized but wrong; the others were right.
+// localized but wrong (gcc build); the others were right.
 TEST(Relocalizer, CrossCheckCatchesTheLookAlikeWing) {
   const auto world = readWorld(kWorld);
   const auto map = loadOccupancyMap(world.map_path);
@@ -159,7 +159,9 @@ TEST(Relocalizer, CrossCheckCatchesTheLookAlikeWing) {
     EXPECT_FALSE(w1) << "seed " << seed;
   }
   EXPECT_GT(checks, 0);
-  EXPECT_EQ(wrong_without, 5) << "the scans were chosen because the keypoints alone get five wrong";
+  // Five in the gcc build, two in the clang sanitizer build: these are borderline scans, and
+  // floating point differs between the two.
+  EXPECT_GE(wrong_without, 1) << "the scans were chosen because the keypoints alone get some wrong";
   EXPECT_EQ(wrong_with, 0);
 }
 
