@@ -22,6 +22,13 @@ mrpt::obs::CObservation2DRangeScan::Ptr scanAt(const mrpt::maps::COccupancyGridM
   return ScanSimulator(lidarProfileByName("omni_12m")).simulate(map, pose, rng);
 }
 
+/// A bare 9 x 7 m rectangle: every pose and its 180 deg twin look alike.
+mrpt::maps::COccupancyGridMap2D bareRectangle() {
+  FloorPlan plan(9.0, 7.0, 0.05);
+  plan.building(0.5, 0.5, 8.5, 6.5);
+  return plan.toGrid();
+}
+
 TEST(CorrelativeMatcher, FindsThePoseOverTheWholeMap) {
   const auto room = test::asymmetricRoom();
   const mrpt::poses::CPose2D truth(5.52, 2.07, 0.8);
@@ -59,9 +66,7 @@ TEST(CorrelativeMatcher, BranchAndBoundFindsWhatExhaustiveSearchFinds) {
 }
 
 TEST(CorrelativeMatcher, ASymmetricRoomGivesTwoEqualSolutions) {
-  FloorPlan plan(9.0, 7.0, 0.05);
-  plan.building(0.5, 0.5, 8.5, 6.5);  // a bare rectangle: the pose and its 180 deg twin look alike
-  const auto map = plan.toGrid();
+  const auto map = bareRectangle();
   const CorrelativeMatcher matcher(map);
   const auto sols = matcher.match(*scanAt(map, mrpt::poses::CPose2D(3.0, 2.5, 0.3)));
   ASSERT_EQ(sols.size(), 2u);
@@ -74,9 +79,7 @@ TEST(CorrelativeMatcher, ASymmetricRoomGivesTwoEqualSolutions) {
 
 // A zone region decides between the twins: the search stays inside it and costs less.
 TEST(CorrelativeMatcher, ARegionKeepsTheSearchInsideIt) {
-  FloorPlan plan(9.0, 7.0, 0.05);
-  plan.building(0.5, 0.5, 8.5, 6.5);
-  const auto map = plan.toGrid();
+  const auto map = bareRectangle();
   const CorrelativeMatcher matcher(map);
   const auto scan = scanAt(map, mrpt::poses::CPose2D(3.0, 2.5, 0.3));
   const auto whole = matcher.match(*scan);
@@ -99,9 +102,7 @@ TEST(CorrelativeMatcher, ARegionKeepsTheSearchInsideIt) {
 // scoreAt is match()'s own score at a pose; a minimum score that high prunes the search to what
 // can beat it, which makes checking a known answer for look-alikes cheap.
 TEST(CorrelativeMatcher, AKnownScoreBoundsTheSearch) {
-  FloorPlan plan(9.0, 7.0, 0.05);
-  plan.building(0.5, 0.5, 8.5, 6.5);
-  const auto map = plan.toGrid();
+  const auto map = bareRectangle();
   const CorrelativeMatcher matcher(map);
   const auto scan = scanAt(map, mrpt::poses::CPose2D(3.0, 2.5, 0.3));
   const auto open = matcher.match(*scan);
