@@ -55,6 +55,14 @@ std::vector<int> topZones(const std::vector<float>& probs, int count) {
 
 Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
                          RelocalizerParams params)
+    : Relocalizer(models_dir, map, params, nullptr) {}
+
+Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
+                         RelocalizerParams params, const std::vector<Zone>& zones)
+    : Relocalizer(models_dir, map, params, &zones) {}
+
+Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
+                         RelocalizerParams params, const std::vector<Zone>* given_zones)
     : params_(params),
       manifest_(readModelManifest(models_dir)),
       classifier_(manifest_, params.onnx),
@@ -63,13 +71,10 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
   requireTrainingMapResolution(manifest_, map, params.map_resolution_tolerance_m);
   requireLandmarksInsideMap(manifest_, map);
   if (params_.cross_check.enabled) matcher_.emplace(map, params_.matcher);
-  if (!manifest_.zone_outlines_file.empty()) enableZoneSearch(map, readZonesYaml(manifest_.zoneOutlinesPath()));
-}
-
-Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
-                         RelocalizerParams params, const std::vector<Zone>& zones)
-    : Relocalizer(models_dir, map, params) {
-  enableZoneSearch(map, zones);
+  if (given_zones)
+    enableZoneSearch(map, *given_zones);
+  else if (!manifest_.zone_outlines_file.empty())
+    enableZoneSearch(map, readZonesYaml(manifest_.zoneOutlinesPath()));
 }
 
 void Relocalizer::enableZoneSearch(const mrpt::maps::COccupancyGridMap2D& map, const std::vector<Zone>& zones) {
@@ -102,12 +107,13 @@ std::vector<PoseHypothesis> Relocalizer::zoneSearch(const mrpt::obs::CObservatio
 }
 
 std::vector<PoseHypothesis> Relocalizer::crossCheck(const mrpt::obs::CObservation2DRangeScan& scan,
-                                                    const PoseHypothesis& answer) const {
-  const double bar = matcher_->scoreAt(scan, answer.pose) - params_.cross_check.score_margin;
+                                                    const Ranking& ranking) const {
+  const double bar = matcher_->scoreAt(scan, ranking.hypotheses.front().pose) - params_.cross_check.score_margin;
   MatchRequest request;
   request.min_score = std::max(bar, params_.matcher.min_score);
   request.solutions = params_.cross_check.places;
-  request.excluded = {{answer.pose.x, answer.pose.y}};  // the answer found again is no alternative to it
+  // A place already ranked, found again, is no alternative to it.
+  for (const auto& h : ranking.hypotheses) request.excluded.push_back({h.pose.x, h.pose.y});
   std::vector<PoseHypothesis> found;
   for (const auto& s : matcher_->match(scan, request))
     found.push_back(hypothesisFromMatch(s, params_.matcher));  // zone unknown: the place is what counts
@@ -202,9 +208,11 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
     r.ranking = verifier_.rank(scored);
     r.times.zone_search_ms = msSince(t);
   }
-  if (r.ranking.localized && params_.cross_check.enabled) {
+  const bool check = params_.cross_check.enabled && !r.ranking.hypotheses.empty() &&
+                     (r.ranking.localized || params_.cross_check.when_not_localized);
+  if (check) {
     t = Clock::now();
-    auto found = verifier_.refineAndScore(scan, crossCheck(scan, r.ranking.hypotheses.front()));
+    auto found = verifier_.refineAndScore(scan, crossCheck(scan, r.ranking));
     r.cross_check_used = true;
     r.cross_check_candidates = static_cast<int>(found.size());
     scored.insert(scored.end(), found.begin(), found.end());

@@ -41,9 +41,14 @@ struct CrossCheckParams {
   /// the answer is ICP-refined and the matcher's poses lie on its grid, so equal places may
   /// score a little apart.
   double score_margin = 0.05;
-  /// Other places looked for, each at least the matcher's exclusion_m from the answer and from
-  /// each other (each one is another branch-and-bound pass).
+  /// Other places looked for, each at least the matcher's exclusion_m from the ranked
+  /// hypotheses and from each other (each one is another branch-and-bound pass).
   int places = 1;
+  /// Also check the best hypothesis of an answer that is not credible ("not localized"). The
+  /// zone search looks in the classifier's zones only; when the classifier names the look-alike
+  /// wing, it finds the mirror place there and the true one is never proposed. The whole-map
+  /// search with the best's score as the bar finds the true place, which then outranks it.
+  bool when_not_localized = true;
 };
 
 struct RelocalizerParams {
@@ -90,7 +95,7 @@ struct RelocalizationResult {
   int candidates = 0;                     ///< poses proposed by the alignment
   bool zone_search_used = false;          ///< the keypoints gave no credible pose and the zone search ran
   int zone_search_candidates = 0;         ///< poses it proposed
-  bool cross_check_used = false;          ///< the keypoints' answer was credible and was cross-checked
+  bool cross_check_used = false;          ///< the best answer was cross-checked for look-alike places
   int cross_check_candidates = 0;         ///< other places the cross-check proposed
   RelocalizationTimes times;
 };
@@ -122,11 +127,15 @@ class Relocalizer {
   bool hasZoneSearch() const { return !zone_regions_.empty(); }
 
  private:
+  /// Both public constructors: the zones given, else those the manifest names, else none; one
+  /// source is read, once.
+  Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map, RelocalizerParams params,
+              const std::vector<Zone>* given_zones);
   void requireTrainingLidar(const mrpt::obs::CObservation2DRangeScan& scan) const;
   void enableZoneSearch(const mrpt::maps::COccupancyGridMap2D& map, const std::vector<Zone>& zones);
   std::vector<PoseHypothesis> zoneSearch(const mrpt::obs::CObservation2DRangeScan& scan,
                                          const std::vector<float>& zone_probabilities) const;
-  std::vector<PoseHypothesis> crossCheck(const mrpt::obs::CObservation2DRangeScan& scan, const PoseHypothesis& answer) const;
+  std::vector<PoseHypothesis> crossCheck(const mrpt::obs::CObservation2DRangeScan& scan, const Ranking& ranking) const;
 
   RelocalizerParams params_;
   ModelManifest manifest_;
