@@ -65,7 +65,7 @@ std::string relocalizerTable(const std::vector<MethodSummary>& summaries, double
            "\"localized but wrong\" is the relocalizer's own confident-but-wrong rate: it said localized and its "
            "best was not right; \"best from matcher\" is how often its best hypothesis came from a correlative "
            "search (for the seeded methods: the zone search, which runs when the keypoints give no credible pose, or "
-           "the cross-check of a credible keypoint answer for look-alike places).\n\n"
+           "the cross-check of the best answer for look-alike places).\n\n"
         << "| world | lidar | method | localized | best right | localized but wrong | best from matcher |\n"
            "|---|---|---|---|---|---|---|\n";
     o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << formatNumber(100.0 * s.seed_localized_rate)

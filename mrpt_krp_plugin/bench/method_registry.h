@@ -36,7 +36,7 @@ struct MethodResources {
 };
 
 /// The method names: `uniform-mcl`, `amcl-kld`, `amcl-kld-50k`, `seeded`, `seeded-no-uniform`,
-/// `seeded-no-cross-check` (no check of a credible keypoint answer for look-alike places),
+/// `seeded-no-cross-check` (no check of the best answer for look-alike places),
 /// `seeded-keypoints-only` (what the two models and the verification achieve on their own: no
 /// zone search, no cross-check), `global-matcher`.
 std::vector<std::string> methodNames();
