@@ -28,7 +28,7 @@ struct ZoneSearchParams {
   int zones = 1;
 };
 
-/// A check of a credible keypoint answer for look-alike places. The keypoints propose poses only
+/// A check of the best answer for look-alike places. The keypoints propose poses only
 /// where the models recognise landmarks; when they align to a look-alike (the other wing of a
 /// mirror-like building), verification finds nothing wrong with the answer, and the true pose
 /// was never proposed. The matcher then searches the whole map with the answer's own score as

@@ -28,7 +28,7 @@ struct NodeParams {
   std::string models_dir;                  ///< the models of this map (krp-train-map's output)
   std::string zones_file;                  ///< `learned`: their zones.yaml, enables the zone search (optional)
   std::string calibration_file;            ///< the map's confidence calibration (krp-bench --fit-calibration; optional)
-  bool cross_check = true;                 ///< `learned`: check a credible answer for look-alike places (CrossCheckParams)
+  bool cross_check = true;                 ///< `learned`: check the best answer for look-alike places (CrossCheckParams)
   bool relocalize_on_startup = true;       ///< relocalize from the first scan
   bool relocalize_on_kidnap = false;       ///< relocalize when the tracked pose stops fitting the scans
   bool publish_when_not_localized = false;  ///< publish `initialpose` even when the relocalizer is unsure
