@@ -200,7 +200,7 @@ static int run(int argc, char** argv) {
                 {"scan-topic", "TOPIC", "--bag: the LaserScan topic", "/scan"},
                 {"odom-frame", "FRAME", "--bag: odometry frame", "odom"},
                 {"base-frame", "FRAME", "--bag: robot frame", "base_link"},
-                {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform, seeded-no-cross-check, "
+                {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform, seeded-no-cross-check, seeded-no-guard, "
                  "seeded-keypoints-only or global-matcher", "amcl-kld"},
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
                 {"zones", "FILE", "seeded / single scan: the zones.yaml the models were trained on (default: the one "
@@ -290,6 +290,9 @@ static int run(int argc, char** argv) {
   krp::MclParams mp;
   mp.seed = static_cast<uint32_t>(toNumber(s, "seed"));
   krp::MclLocalizer loc(map.grid, init, mp);
+  if (krp::methodUsesLookAlikeGuard(s["method"]))
+    loc.setLookAlikeGuard(std::make_shared<krp::LookAlikeGuard>(
+        std::make_shared<krp::CorrelativeMatcher>(*map.grid, ms.relocalizer.matcher), ms.guard));
 
   std::ostringstream csv;
   csv << "step,x_m,y_m,phi_rad,std_xy_m,std_phi_deg,particles,cpu_s" << (truth.empty() ? "" : ",error_xy_m,error_phi_deg")

@@ -66,9 +66,14 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     const auto lidars = cfg.lidars.empty() ? std::vector<std::string>{w.default_lidar_profile} : cfg.lidars;
     std::shared_ptr<const MatcherRelocalizer> matcher;
     if (need_matcher) matcher = std::make_shared<MatcherRelocalizer>(*map, cfg.method_settings.matcher);
+    std::shared_ptr<const LookAlikeGuard> guard;
+    if (std::any_of(cfg.methods.begin(), cfg.methods.end(), methodUsesLookAlikeGuard))
+      guard = std::make_shared<LookAlikeGuard>(
+          std::make_shared<CorrelativeMatcher>(*map, cfg.method_settings.relocalizer.matcher), cfg.method_settings.guard);
     for (size_t li = 0; li < lidars.size(); ++li) {
       MethodResources res;
       res.matcher = matcher;
+      res.guard = guard;
       if (!seeded_methods.empty()) {
         const auto models = modelsFolder(cfg.method_settings.models_root, w, lidars[li]);
         const auto zones = readZonesYaml(w.zones_path);
@@ -114,6 +119,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         ms.seeded.seed = filter_seed;
         const auto init = makeInitializer(method, ms, job.resources);
         MclLocalizer loc(job.map, init, mp);
+        if (methodUsesLookAlikeGuard(method)) loc.setLookAlikeGuard(job.resources.guard);
         TrialRecord rec;
         rec.world = job.world.name;
         rec.lidar = job.lidar.name;

@@ -9,16 +9,21 @@ namespace krp {
 
 std::vector<std::string> methodNames() {
   return {"uniform-mcl",           "amcl-kld",       "amcl-kld-50k", "seeded", "seeded-no-uniform", "seeded-no-cross-check",
-          "seeded-keypoints-only", "global-matcher"};
+          "seeded-no-guard",       "seeded-keypoints-only", "global-matcher"};
 }
 
 namespace {
 constexpr const char* kKeypointsOnly = "seeded-keypoints-only";
 constexpr const char* kNoCrossCheck = "seeded-no-cross-check";
+constexpr const char* kNoGuard = "seeded-no-guard";
 }  // namespace
 
 bool methodNeedsModels(const std::string& name) {
-  return name == "seeded" || name == "seeded-no-uniform" || name == kNoCrossCheck || name == kKeypointsOnly;
+  return name == "seeded" || name == "seeded-no-uniform" || name == kNoCrossCheck || name == kNoGuard ||
+         name == kKeypointsOnly;
+}
+bool methodUsesLookAlikeGuard(const std::string& name) {
+  return methodNeedsModels(name) && name != kNoGuard && name != kKeypointsOnly;
 }
 bool methodUsesZoneSearch(const std::string& name) { return methodNeedsModels(name) && name != kKeypointsOnly; }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mrpt_krp_plugin/filter/amcl_kld_initializer.h"
+#include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/filter/seeded_initializer.h"
 #include "mrpt_krp_plugin/filter/uniform_initializer.h"
 #include "mrpt_krp_plugin/relocalize/matcher_relocalizer.h"
@@ -25,6 +26,7 @@ struct MethodSettings {
   /// The seeded methods read their models from modelsFolder() under this (krp-train-map's output).
   std::string models_root = "models";
   MatcherRelocalizerParams matcher;
+  LookAlikeGuardParams guard;  ///< the filter's check of each convergence (methodUsesLookAlikeGuard)
 };
 
 /// What some methods need built once per map: the learned relocalizer of each seeded method
@@ -33,12 +35,14 @@ struct MethodSettings {
 struct MethodResources {
   std::map<std::string, std::shared_ptr<const Relocalizer>> relocalizers;  ///< by method name
   std::shared_ptr<const MatcherRelocalizer> matcher;
+  std::shared_ptr<const LookAlikeGuard> guard;  ///< for the methods whose filter checks its convergence
 };
 
 /// The method names: `uniform-mcl`, `amcl-kld`, `amcl-kld-50k`, `seeded`, `seeded-no-uniform`,
 /// `seeded-no-cross-check` (no check of the best answer for look-alike places),
+/// `seeded-no-guard` (the filter does not check its convergence for look-alike places),
 /// `seeded-keypoints-only` (what the two models and the verification achieve on their own: no
-/// zone search, no cross-check), `global-matcher`.
+/// zone search, no cross-check, no guard), `global-matcher`.
 std::vector<std::string> methodNames();
 
 /// Whether the method needs trained models (a Relocalizer).
@@ -47,6 +51,9 @@ bool methodNeedsModels(const std::string& name);
 bool methodUsesZoneSearch(const std::string& name);
 /// The relocalizer parameters of a seeded method: `base` with what the method turns off.
 RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParams base);
+/// Whether the method's filter checks each convergence for a look-alike place (LookAlikeGuard):
+/// the seeded methods but `seeded-no-guard` and `seeded-keypoints-only`.
+bool methodUsesLookAlikeGuard(const std::string& name);
 /// Whether the method needs the global matcher.
 bool methodNeedsMatcher(const std::string& name);
 

@@ -3,8 +3,11 @@
 
 #include <time.h>
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include "mrpt_krp_plugin/common/random.h"
@@ -61,6 +64,33 @@ void MclLocalizer::resampleSystematicIfNeeded() {
   }
 }
 
+bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
+                                    const mrpt::math::CMatrixDouble33& cov) {
+  const auto& gp = guard_->params();
+  const bool converged = std::max(std::sqrt(cov(0, 0)), std::sqrt(cov(1, 1))) < gp.converged_std_m &&
+                         std::sqrt(cov(2, 2)) * 180.0 / M_PI < gp.converged_std_deg;
+  if (!converged) {
+    convergence_checked_ = false;  // the next convergence is checked again
+    return false;
+  }
+  if (convergence_checked_) return false;
+  convergence_checked_ = true;
+  const auto other = guard_->lookAlike(scan, mean);
+  if (!other) return false;
+  // Every k-th particle moves, so the share is exact and the rest keep their spread.
+  const size_t every = std::max<size_t>(1, static_cast<size_t>(std::lround(1.0 / gp.moved_share)));
+  Rng rng(deriveSeed(params_.seed ^ 0x9e3779b97f4a7c15ull, ++guard_draws_));
+  const double spread_rad = gp.spread_deg * M_PI / 180.0;
+  for (size_t i = 0; i < pf_.m_particles.size(); ++i) {
+    auto& p = pf_.m_particles[i];
+    p.log_w = 0.0;  // both places start even: the next scans decide
+    if (i % every != 0) continue;
+    p.d = mrpt::math::TPose2D(rng.normal(other->x, gp.spread_m), rng.normal(other->y, gp.spread_m),
+                              mrpt::math::wrapToPi(rng.normal(other->phi, spread_rad)));
+  }
+  return true;
+}
+
 MclEstimate MclLocalizer::update(const RawlogStep& step) {
   const double t0 = threadCpuSeconds();
   MclEstimate e;
@@ -71,6 +101,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     ++initializations_;
     e.initialized = true;
     kidnap_.reset();
+    convergence_checked_ = false;
   }
   auto action = step.action;
   if (!action) {
@@ -84,15 +115,18 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   filter_.executeOn(pf_, action.get(), step.observations.get(), &stats);
   if (!filter_.m_options.adaptiveSampleSize) resampleSystematicIfNeeded();
 
-  const auto [cov, mean] = pf_.getCovarianceAndMean();
+  auto [cov, mean] = pf_.getCovarianceAndMean();
+  const auto scan = step.observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+  if (guard_ && scan && guardConvergence(*scan, mean.asTPose(), cov)) {
+    e.look_alike_found = true;
+    std::tie(cov, mean) = pf_.getCovarianceAndMean();
+  }
   e.cov = cov;
   e.mean = mean.asTPose();
-  if (fit_scorer_) {
-    if (const auto scan = step.observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>()) {
-      e.fit_fraction = fit_scorer_->score(*scan, e.mean).fit_fraction;
-      e.kidnap_detected = kidnap_.update(e.fit_fraction);
-      if (e.kidnap_detected) initialized_ = false;
-    }
+  if (fit_scorer_ && scan) {
+    e.fit_fraction = fit_scorer_->score(*scan, e.mean).fit_fraction;
+    e.kidnap_detected = kidnap_.update(e.fit_fraction);
+    if (e.kidnap_detected) initialized_ = false;
   }
   e.particles = pf_.size();
   e.cpu_s = threadCpuSeconds() - t0;

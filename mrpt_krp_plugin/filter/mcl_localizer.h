@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "mrpt_krp_plugin/filter/kidnap_detector.h"
+#include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/filter/particle_initializer.h"
 #include "mrpt_krp_plugin/relocalize/scan_fit.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
@@ -39,6 +40,7 @@ struct MclEstimate {
   double fit_fraction = -1.0;  ///< scan returns explained at the mean (kidnap detection on; else -1)
   bool initialized = false;    ///< the initializer ran at this update (the first, or after a kidnap)
   bool kidnap_detected = false;  ///< this update completed a kidnap: the next one re-initializes
+  bool look_alike_found = false;  ///< the filter had converged and the guard moved particles to a look-alike place
 };
 
 /// MRPT's CMonteCarloLocalization2D driven step by step, with the start chosen by a
@@ -57,6 +59,9 @@ class MclLocalizer {
   /// call after a detected kidnap.
   MclEstimate update(const RawlogStep& step);
 
+  /// Checks each convergence for a look-alike place (LookAlikeGuard); null: no check.
+  void setLookAlikeGuard(std::shared_ptr<const LookAlikeGuard> guard) { guard_ = std::move(guard); }
+
   /// The next update runs the initializer again (a user asked to relocalize).
   void reinitialize() { initialized_ = false; }
   bool isInitialized() const { return initialized_; }
@@ -66,6 +71,9 @@ class MclLocalizer {
 
  private:
   void resampleSystematicIfNeeded();
+  /// The guard's check of a fresh convergence; true when particles were moved.
+  bool guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
+                        const mrpt::math::CMatrixDouble33& cov);
 
   std::shared_ptr<mrpt::maps::COccupancyGridMap2D> map_;
   std::shared_ptr<ParticleInitializer> init_;
@@ -77,6 +85,9 @@ class MclLocalizer {
   uint64_t resample_draws_ = 0;
   std::unique_ptr<ScanFitScorer> fit_scorer_;  ///< only with kidnap detection
   KidnapDetector kidnap_;
+  std::shared_ptr<const LookAlikeGuard> guard_;
+  bool convergence_checked_ = false;  ///< the guard has checked the filter's current convergence
+  uint64_t guard_draws_ = 0;
 };
 
 /// Thread CPU time [s].

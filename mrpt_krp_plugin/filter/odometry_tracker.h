@@ -43,6 +43,8 @@ class OdometryTracker {
   void reinitialize() { localizer_.reinitialize(); }
 
   const MclLocalizer& localizer() const { return localizer_; }
+  /// The filter checks each convergence for a look-alike place (MclLocalizer::setLookAlikeGuard).
+  void setLookAlikeGuard(std::shared_ptr<const LookAlikeGuard> guard) { localizer_.setLookAlikeGuard(std::move(guard)); }
   const std::optional<TrackerUpdate>& last() const { return last_; }
 
  private:

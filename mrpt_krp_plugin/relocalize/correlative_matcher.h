@@ -69,6 +69,7 @@ class CorrelativeMatcher {
 
   /// Nodes whose bound was computed in the last match() (a measure of its cost).
   long long lastNodesScored() const { return nodes_scored_; }
+  const CorrelativeMatcherParams& params() const { return params_; }
 
  private:
   struct Rotation {

@@ -84,6 +84,7 @@ const std::map<std::string, Reader>& readers() {
       {"update_min_a", number(&NodeParams::update_min_a, 0.0, 2 * M_PI)},
       {"max_particles", integer(&NodeParams::max_particles, 100, 1000000)},
       {"uniform_fraction", number(&NodeParams::uniform_fraction, 0.0, 0.99)},
+      {"look_alike_guard", boolean(&NodeParams::look_alike_guard)},
   };
   return r;
 }

@@ -42,6 +42,7 @@ struct NodeParams {
   double update_min_a = 0.5236;        ///< `track`: or this much turn [rad]
   int max_particles = 5000;            ///< `track`: cap of the seeded particle cloud
   double uniform_fraction = 0.05;      ///< `track`: share of particles spread uniformly [0..1)
+  bool look_alike_guard = true;        ///< `track`: check each convergence for a look-alike place (LookAlikeGuard)
 
   // Derived library parameters.
   HypothesisSourceParams hypothesisSource() const;

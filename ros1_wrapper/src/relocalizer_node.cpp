@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "ros_conversions.h"
 
@@ -125,6 +126,8 @@ void RelocalizerNode::useMap(OccupancyMap map) {
     MclParams mcl;
     mcl.kidnap = params_.kidnap();
     state->tracker = std::make_shared<OdometryTracker>(grid, state->seeding, mcl, params_.tracker());
+    if (params_.look_alike_guard)
+      state->tracker->setLookAlikeGuard(std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(*grid)));
   }
   std::ostringstream s;
   s << "map in use: " << state->map->source << " (" << grid->getSizeX() << " x " << grid->getSizeY() << " cells)";
