@@ -18,7 +18,7 @@ bench=./build/mrpt_krp_plugin/apps/krp-bench
 common=(--worlds office_two_zone --models-root models --steps 10 --seed 1 --trials 100)
 if [[ "$which" == all || "$which" == lds01 ]]; then
   "$bench" "${common[@]}" --lidars lds01 \
-    --methods uniform-mcl,amcl-kld,seeded,seeded-no-cross-check,seeded-keypoints-only,global-matcher \
+    --methods uniform-mcl,amcl-kld,seeded,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
     --out reports/relocalization/office_two_zone_lds01 "$@"
 fi
 if [[ "$which" == all || "$which" == safety_270 ]]; then

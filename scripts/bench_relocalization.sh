@@ -2,10 +2,11 @@
 # Regenerates the committed relocalization reports (issue 4), every method on the same simulated
 # kidnaps with the same seeds, 360 deg 12 m lidar, 10 updates:
 #   office_two_zone: 100 trials, uniform-mcl, amcl-kld, seeded (shipped models + zone search +
-#                    cross-check), seeded-no-uniform, seeded-no-cross-check, seeded-keypoints-only
-#                    (the models alone), global-matcher (~13 min);
+#                    cross-check, filter with the look-alike guard), seeded-no-uniform,
+#                    seeded-no-cross-check, seeded-no-guard, seeded-keypoints-only (the models
+#                    alone), global-matcher (~6 min on 2 idle cores);
 #   warehouse:       30 trials, the same without uniform-mcl, whose 92,537 particles cost ~3.5 s an
-#                    update there (reports/baseline/warehouse has it over 40 updates) (~5 min).
+#                    update there (reports/baseline/warehouse has it over 40 updates) (~2 min).
 # Usage: scripts/bench_relocalization.sh [office|warehouse|all] [extra krp-bench flags]
 # (build first with scripts/build.sh)
 set -euo pipefail
@@ -18,11 +19,11 @@ bench=./build/mrpt_krp_plugin/apps/krp-bench
 common=(--lidars omni_12m --models-root models --steps 10 --seed 1)
 if [[ "$which" == all || "$which" == office ]]; then
   "$bench" --worlds office_two_zone "${common[@]}" --trials 100 \
-    --methods uniform-mcl,amcl-kld,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-keypoints-only,global-matcher \
+    --methods uniform-mcl,amcl-kld,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
     --out reports/relocalization/office_two_zone "$@"
 fi
 if [[ "$which" == all || "$which" == warehouse ]]; then
   "$bench" --worlds warehouse "${common[@]}" --trials 30 \
-    --methods amcl-kld,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-keypoints-only,global-matcher \
+    --methods amcl-kld,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
     --out reports/relocalization/warehouse "$@"
 fi
