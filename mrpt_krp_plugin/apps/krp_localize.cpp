@@ -201,7 +201,7 @@ static int run(int argc, char** argv) {
                 {"odom-frame", "FRAME", "--bag: odometry frame", "odom"},
                 {"base-frame", "FRAME", "--bag: robot frame", "base_link"},
                 {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform, seeded-no-cross-check, seeded-no-guard, "
-                 "seeded-keypoints-only or global-matcher", "amcl-kld"},
+                 "seeded-keypoints-only, global-matcher or global-matcher-guarded", "amcl-kld"},
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
                 {"zones", "FILE", "seeded / single scan: the zones.yaml the models were trained on (default: the one "
                  "beside the models when their manifest names it); when the keypoints give no credible pose, the "
@@ -250,7 +250,7 @@ static int run(int argc, char** argv) {
   const auto stride = static_cast<long>(toNumber(s, "single_scan_stride"));
   if (stride < 1) throw krp::InputError("--single-scan-stride", "must be at least 1");
   const bool single_scan_mode = every_scan || single_scan >= 0;
-  const bool use_matcher = s["method"] == "global-matcher";
+  const bool use_matcher = krp::methodNeedsMatcher(s["method"]);
   const auto map = krp::loadOccupancyMap(s["map"]);
   std::shared_ptr<const krp::Relocalizer> relocalizer;
   if (krp::methodNeedsModels(s["method"]) || (single_scan_mode && !use_matcher)) {

@@ -9,13 +9,14 @@ namespace krp {
 
 std::vector<std::string> methodNames() {
   return {"uniform-mcl",           "amcl-kld",       "amcl-kld-50k", "seeded", "seeded-no-uniform", "seeded-no-cross-check",
-          "seeded-no-guard",       "seeded-keypoints-only", "global-matcher"};
+          "seeded-no-guard",       "seeded-keypoints-only", "global-matcher", "global-matcher-guarded"};
 }
 
 namespace {
 constexpr const char* kKeypointsOnly = "seeded-keypoints-only";
 constexpr const char* kNoCrossCheck = "seeded-no-cross-check";
 constexpr const char* kNoGuard = "seeded-no-guard";
+constexpr const char* kMatcherGuarded = "global-matcher-guarded";
 }  // namespace
 
 bool methodNeedsModels(const std::string& name) {
@@ -23,7 +24,7 @@ bool methodNeedsModels(const std::string& name) {
          name == kKeypointsOnly;
 }
 bool methodUsesLookAlikeGuard(const std::string& name) {
-  return methodNeedsModels(name) && name != kNoGuard && name != kKeypointsOnly;
+  return (methodNeedsModels(name) && name != kNoGuard && name != kKeypointsOnly) || name == kMatcherGuarded;
 }
 bool methodUsesZoneSearch(const std::string& name) { return methodNeedsModels(name) && name != kKeypointsOnly; }
 
@@ -32,7 +33,7 @@ RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParam
   if (name == kKeypointsOnly) base.zone_search.zones = 0;
   return base;
 }
-bool methodNeedsMatcher(const std::string& name) { return name == "global-matcher"; }
+bool methodNeedsMatcher(const std::string& name) { return name == "global-matcher" || name == kMatcherGuarded; }
 
 std::string modelsFolder(const std::string& root, const World& world, const std::string& lidar) {
   const std::string name = lidar == world.default_lidar_profile ? world.name : world.name + "_" + lidar;

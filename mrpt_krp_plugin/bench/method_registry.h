@@ -42,7 +42,8 @@ struct MethodResources {
 /// `seeded-no-cross-check` (no check of the best answer for look-alike places),
 /// `seeded-no-guard` (the filter does not check its convergence for look-alike places),
 /// `seeded-keypoints-only` (what the two models and the verification achieve on their own: no
-/// zone search, no cross-check, no guard), `global-matcher`.
+/// zone search, no cross-check, no guard), `global-matcher`, `global-matcher-guarded` (the
+/// same with the look-alike guard: the ROS node's track mode with its default backend).
 std::vector<std::string> methodNames();
 
 /// Whether the method needs trained models (a Relocalizer).
@@ -52,7 +53,8 @@ bool methodUsesZoneSearch(const std::string& name);
 /// The relocalizer parameters of a seeded method: `base` with what the method turns off.
 RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParams base);
 /// Whether the method's filter checks each convergence for a look-alike place (LookAlikeGuard):
-/// the seeded methods but `seeded-no-guard` and `seeded-keypoints-only`.
+/// the seeded methods but `seeded-no-guard` and `seeded-keypoints-only`, and
+/// `global-matcher-guarded`.
 bool methodUsesLookAlikeGuard(const std::string& name);
 /// Whether the method needs the global matcher.
 bool methodNeedsMatcher(const std::string& name);
