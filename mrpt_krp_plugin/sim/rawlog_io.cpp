@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "mrpt_krp_plugin/common/atomic_file.h"
+#include "mrpt_krp_plugin/common/contained_run.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 
 namespace krp {
@@ -64,8 +65,8 @@ void writeTrialRawlog(const Trial& trial, const std::string& rawlog_path, const 
   out.commit();
 }
 
-std::vector<RawlogStep> readRawlog(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw InputError(path, "file does not exist");
+namespace {
+std::vector<RawlogStep> parseRawlog(const std::string& path) {
   std::vector<RawlogStep> steps;
   mrpt::io::CFileGZInputStream f(path);
   auto arch = mrpt::serialization::archiveFrom(f);
@@ -97,6 +98,15 @@ std::vector<RawlogStep> readRawlog(const std::string& path) {
   }
   if (steps.empty()) throw InputError(path, "the rawlog holds no 2D laser scan");
   return steps;
+}
+}  // namespace
+
+std::vector<RawlogStep> readRawlog(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path, "file does not exist");
+  // MRPT's deserializer crashes on some corrupt records (found by tests/fuzz/rawlog_fuzzer): a
+  // first read in a child process turns that into an error naming the file.
+  runContained([&] { parseRawlog(path); }, path, "MRPT's rawlog deserializer");
+  return parseRawlog(path);
 }
 
 std::vector<mrpt::math::TPose2D> readGroundTruth(const std::string& path, std::vector<double>* distance_m) {
