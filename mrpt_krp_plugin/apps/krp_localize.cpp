@@ -290,9 +290,7 @@ static int run(int argc, char** argv) {
   krp::MclParams mp;
   mp.seed = static_cast<uint32_t>(toNumber(s, "seed"));
   krp::MclLocalizer loc(map.grid, init, mp);
-  if (krp::methodUsesLookAlikeGuard(s["method"]))
-    loc.setLookAlikeGuard(std::make_shared<krp::LookAlikeGuard>(
-        std::make_shared<krp::CorrelativeMatcher>(*map.grid, ms.relocalizer.matcher), ms.guard));
+  if (krp::methodUsesLookAlikeGuard(s["method"])) loc.setLookAlikeGuard(krp::makeLookAlikeGuard(*map.grid, ms));
 
   std::ostringstream csv;
   csv << "step,x_m,y_m,phi_rad,std_xy_m,std_phi_deg,particles,cpu_s" << (truth.empty() ? "" : ",error_xy_m,error_phi_deg")

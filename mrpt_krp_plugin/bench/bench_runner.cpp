@@ -68,8 +68,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     if (need_matcher) matcher = std::make_shared<MatcherRelocalizer>(*map, cfg.method_settings.matcher);
     std::shared_ptr<const LookAlikeGuard> guard;
     if (std::any_of(cfg.methods.begin(), cfg.methods.end(), methodUsesLookAlikeGuard))
-      guard = std::make_shared<LookAlikeGuard>(
-          std::make_shared<CorrelativeMatcher>(*map, cfg.method_settings.relocalizer.matcher), cfg.method_settings.guard);
+      guard = makeLookAlikeGuard(*map, cfg.method_settings);
     for (size_t li = 0; li < lidars.size(); ++li) {
       MethodResources res;
       res.matcher = matcher;

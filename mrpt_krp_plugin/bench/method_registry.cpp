@@ -26,6 +26,11 @@ bool methodNeedsModels(const std::string& name) {
 bool methodUsesLookAlikeGuard(const std::string& name) {
   return (methodNeedsModels(name) && name != kNoGuard && name != kKeypointsOnly) || name == kMatcherGuarded;
 }
+std::shared_ptr<const LookAlikeGuard> makeLookAlikeGuard(const mrpt::maps::COccupancyGridMap2D& map,
+                                                         const MethodSettings& settings) {
+  return std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(map, settings.relocalizer.matcher),
+                                          settings.guard);
+}
 bool methodUsesZoneSearch(const std::string& name) { return methodNeedsModels(name) && name != kKeypointsOnly; }
 
 RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParams base) {

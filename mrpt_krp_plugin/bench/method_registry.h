@@ -56,6 +56,10 @@ RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParam
 /// the seeded methods but `seeded-no-guard` and `seeded-keypoints-only`, and
 /// `global-matcher-guarded`.
 bool methodUsesLookAlikeGuard(const std::string& name);
+/// The look-alike guard of a map, with its own correlative matcher (the relocalizer's matcher
+/// settings) and `settings.guard`.
+std::shared_ptr<const LookAlikeGuard> makeLookAlikeGuard(const mrpt::maps::COccupancyGridMap2D& map,
+                                                         const MethodSettings& settings);
 /// Whether the method needs the global matcher.
 bool methodNeedsMatcher(const std::string& name);
 
