@@ -98,15 +98,7 @@ ThesisComparison runThesisComparison(const World& world, const std::string& lida
   const auto map = loadOccupancyMap(world.map_path);
   const auto manifest = readModelManifest(models_dir);
   out.zone_names = manifest.zones;
-  const auto world_zones = readZonesYaml(world.zones_path);
-  std::vector<Zone> zones;  // manifest order
-  for (const auto& name : manifest.zones) {
-    const auto it = std::find_if(world_zones.begin(), world_zones.end(), [&](const Zone& z) { return z.name == name; });
-    if (it == world_zones.end())
-      throw InputError(world.zones_path, "no zone named '" + name + "', which the models in " + models_dir +
-                                             " were trained on");
-    zones.push_back(*it);
-  }
+  const auto zones = zonesInManifestOrder(manifest, readZonesYaml(world.zones_path), world.zones_path);
   const ZonePoseSampler sampler(*map.grid, zones, params.clearance_m);
   const ScanSimulator simulator(world.lidar(lidar));
   SubmapParams sp;

@@ -77,17 +77,24 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
     enableZoneSearch(map, readZonesYaml(manifest_.zoneOutlinesPath()));
 }
 
+std::vector<Zone> zonesInManifestOrder(const ModelManifest& manifest, const std::vector<Zone>& zones,
+                                       const std::string& input) {
+  std::vector<Zone> ordered;
+  for (const auto& name : manifest.zones) {
+    const auto it = std::find_if(zones.begin(), zones.end(), [&](const Zone& z) { return z.name == name; });
+    if (it == zones.end())
+      throw InputError(input, "no zone named '" + name + "', which the models in " + manifest.folder +
+                                  " were trained on: give the zones.yaml of their world '" + manifest.world + "'");
+    ordered.push_back(*it);
+  }
+  return ordered;
+}
+
 void Relocalizer::enableZoneSearch(const mrpt::maps::COccupancyGridMap2D& map, const std::vector<Zone>& zones) {
   zone_regions_.clear();
   if (params_.zone_search.zones <= 0) return;
   if (!matcher_) matcher_.emplace(map, params_.matcher);
-  for (const auto& name : manifest_.zones) {
-    const auto it = std::find_if(zones.begin(), zones.end(), [&](const Zone& z) { return z.name == name; });
-    if (it == zones.end())
-      throw InputError("zones", "no zone named '" + name + "', which the models in " + manifest_.folder +
-                                    " were trained on: give the zones.yaml of their world '" + manifest_.world + "'");
-    zone_regions_.push_back(matcher_->regionOf({*it}));
-  }
+  for (const auto& zone : zonesInManifestOrder(manifest_, zones, "zones")) zone_regions_.push_back(matcher_->regionOf({zone}));
 }
 
 std::vector<PoseHypothesis> Relocalizer::zoneSearch(const mrpt::obs::CObservation2DRangeScan& scan,

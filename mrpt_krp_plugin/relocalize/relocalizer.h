@@ -51,6 +51,11 @@ struct CrossCheckParams {
   bool when_not_localized = true;
 };
 
+/// The outlines of the zones the models were trained on, in the manifest's order, picked by name
+/// from `zones`. InputError(input, ...) naming the first manifest zone that has no outline there.
+std::vector<Zone> zonesInManifestOrder(const ModelManifest& manifest, const std::vector<Zone>& zones,
+                                       const std::string& input);
+
 struct RelocalizerParams {
   /// The keypoint model's detections are used for this many of the classifier's most likely
   /// zones: symmetric buildings make the top zone wrong often enough that verification against
