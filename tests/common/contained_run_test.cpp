@@ -9,37 +9,31 @@
 #include <stdexcept>
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "support/input_error_message.h"
 
 namespace krp {
 namespace {
 
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::inputErrorMessage;
 
 TEST(ContainedRun, AReaderThatReturnsOrThrowsIsNoCrash) {
-  EXPECT_EQ(messageOf([] { runContained([] {}, "log.rawlog", "the reader"); }), "");
-  EXPECT_EQ(messageOf([] { runContained([] { throw std::runtime_error("bad record"); }, "log.rawlog", "the reader"); }),
+  EXPECT_EQ(inputErrorMessage([] { runContained([] {}, "log.rawlog", "the reader"); }), "");
+  EXPECT_EQ(inputErrorMessage([] { runContained([] { throw std::runtime_error("bad record"); }, "log.rawlog", "the reader"); }),
             "");
 }
 
 TEST(ContainedRun, ACrashBecomesAnErrorNamingTheInput) {
-  const auto m = messageOf([] { runContained([] { std::abort(); }, "log.rawlog", "the reader"); });
+  const auto m = inputErrorMessage([] { runContained([] { std::abort(); }, "log.rawlog", "the reader"); });
   EXPECT_NE(m.find("log.rawlog"), std::string::npos) << m;
   EXPECT_NE(m.find("the reader crashed"), std::string::npos) << m;
-  const auto exited = messageOf([] { runContained([] { ::_exit(7); }, "log.rawlog", "the reader"); });
+  const auto exited = inputErrorMessage([] { runContained([] { ::_exit(7); }, "log.rawlog", "the reader"); });
   EXPECT_NE(exited.find("exit status 7"), std::string::npos) << exited;
 }
 
 TEST(ContainedRun, AReaderThatNeverReturnsIsStopped) {
   ContainedRunParams p;
   p.timeout_s = 1;
-  const auto m = messageOf([&] { runContained([] { for (;;) ::pause(); }, "log.rawlog", "the reader", p); });
+  const auto m = inputErrorMessage([&] { runContained([] { for (;;) ::pause(); }, "log.rawlog", "the reader", p); });
   EXPECT_NE(m.find("did not finish in 1 s"), std::string::npos) << m;
 }
 

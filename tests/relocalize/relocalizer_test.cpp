@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "support/input_error_message.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/relocalize/relocalizer.h"
@@ -25,14 +26,7 @@ namespace {
 const std::string kModels = std::string(KRP_SOURCE_DIR) + "/models/office_two_zone";
 const std::string kWorld = std::string(KRP_SOURCE_DIR) + "/sim_worlds/office_two_zone/office_two_zone.world.yaml";
 
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::inputErrorMessage;
 
 // The shipped office models were trained for omni_12m (360 deg, 12 m) on a 0.05 m map.
 TEST(Relocalizer, RefusesScansFromAnotherLidar) {
@@ -43,10 +37,10 @@ TEST(Relocalizer, RefusesScansFromAnotherLidar) {
   const mrpt::poses::CPose2D pose(trial.truth[0]);
   Rng rng(1);
   const auto own = ScanSimulator(lidarProfileByName("omni_12m")).simulate(*map.grid, pose, rng);
-  EXPECT_EQ(messageOf([&] { relocalizer.relocalize(*own); }), "");
+  EXPECT_EQ(inputErrorMessage([&] { relocalizer.relocalize(*own); }), "");
   for (const char* other : {"safety_270", "lds01"}) {
     const auto scan = ScanSimulator(lidarProfileByName(other)).simulate(*map.grid, pose, rng);
-    const auto message = messageOf([&] { relocalizer.relocalize(*scan); });
+    const auto message = inputErrorMessage([&] { relocalizer.relocalize(*scan); });
     EXPECT_NE(message.find("trained for lidar 'omni_12m'"), std::string::npos) << other << ": " << message;
   }
 }
@@ -55,7 +49,7 @@ TEST(Relocalizer, RefusesAMapOfAnotherCellSize) {
   const auto map = loadOccupancyMap(readWorld(kWorld).map_path);
   mrpt::maps::COccupancyGridMap2D coarse;
   coarse.setSize(map.grid->getXMin(), map.grid->getXMax(), map.grid->getYMin(), map.grid->getYMax(), 0.1f);
-  const auto message = messageOf([&] { Relocalizer(kModels, coarse); });
+  const auto message = inputErrorMessage([&] { Relocalizer(kModels, coarse); });
   EXPECT_NE(message.find("trained on a map of 0.05"), std::string::npos) << message;
 }
 
@@ -64,7 +58,7 @@ TEST(Relocalizer, RefusesZonesThatAreNotTheModels) {
   const auto map = loadOccupancyMap(world.map_path);
   auto zones = readZonesYaml(world.zones_path);
   zones[1].name = "lobby";
-  const auto message = messageOf([&] { Relocalizer(kModels, *map.grid, {}, zones); });
+  const auto message = inputErrorMessage([&] { Relocalizer(kModels, *map.grid, {}, zones); });
   EXPECT_NE(message.find("no zone named 'east_wing'"), std::string::npos) << message;
   EXPECT_FALSE(Relocalizer(kModels, *map.grid).hasZoneSearch());
   EXPECT_TRUE(Relocalizer(kModels, *map.grid, {}, readZonesYaml(world.zones_path)).hasZoneSearch());
@@ -83,7 +77,7 @@ TEST(Relocalizer, ReadsTheZonesBesideTheModels) {
   nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "manifest.json"));
   manifest["zone_outlines"] = {{"file", "zones.yaml"}, {"sha256", "not checked"}};
   std::ofstream(dir / "manifest.json") << manifest.dump();
-  EXPECT_NE(messageOf([&] { Relocalizer(dir.string(), *map.grid); }).find("zones.yaml"), std::string::npos);
+  EXPECT_NE(inputErrorMessage([&] { Relocalizer(dir.string(), *map.grid); }).find("zones.yaml"), std::string::npos);
   // Zones given by the user are the only source read: the missing file does not matter then.
   EXPECT_TRUE(Relocalizer(dir.string(), *map.grid, {}, readZonesYaml(world.zones_path)).hasZoneSearch());
   fs::copy_file(world.zones_path, dir / "zones.yaml");
