@@ -18,9 +18,11 @@ namespace krp {
 /// most branches are pruned) and, when there is one, moves a share of the particles there: the
 /// next scans decide between the two, and until they do the filter does not claim a pose.
 struct LookAlikeGuardParams {
-  /// The filter counts as converged (and is checked, once per convergence) when its largest
-  /// position std is below this and its heading std below the next [m], [deg]. The bench's
-  /// "confident" uses the same thresholds.
+  /// The filter counts as converged (and is checked, once per convergence) when the larger of
+  /// its x and y std (covariance diagonal) is below this and its heading std below the next
+  /// [m], [deg]. The bench's "confident" has the same thresholds but takes the largest
+  /// eigenvalue of the xy covariance, so a cloud stretched along a diagonal can count as
+  /// converged here a little before the bench calls it confident.
   double converged_std_m = 0.5;
   double converged_std_deg = 10.0;
   /// A place counts as a look-alike when it scores at least the mean's matcher score minus this
