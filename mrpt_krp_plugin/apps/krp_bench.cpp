@@ -10,6 +10,7 @@
 #include "mrpt_krp_plugin/bench/kidnap_report.h"
 #include "mrpt_krp_plugin/bench/bench_runner.h"
 #include "mrpt_krp_plugin/bench/calibration_fit.h"
+#include "mrpt_krp_plugin/bench/report_format.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
 
@@ -48,6 +49,9 @@ static int run(int argc, char** argv) {
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"search-zones", "N", "seeded: when the keypoints give no credible pose, the correlative matcher "
                  "searches this many of the classifier's most likely zones (0 = no zone search)", "1"},
+                {"guard-ambiguity-margin", "S", "methods with the look-alike guard: a place scoring within this of the "
+                 "filter's mean (matcher score) makes the estimate ambiguous, so not confident (0 = only places that "
+                 "fit at least as well)", krp::formatNumber(krp::LookAlikeGuardParams{}.ambiguity_margin)},
                 {"calibration", "FILE", "relocalizing methods: a confidence calibration (--fit-calibration's output) "
                  "applied before the 'localized' threshold", ""},
                 {"fit-calibration", "FILE", "fit a confidence calibration on this run's first-scan answers (one world, "
@@ -80,6 +84,9 @@ static int run(int argc, char** argv) {
   const auto search_zones = args.integer("search-zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
   cfg.method_settings.relocalizer.zone_search.zones = static_cast<int>(search_zones);
+  cfg.method_settings.guard.ambiguity_margin = args.number("guard-ambiguity-margin");
+  if (!(cfg.method_settings.guard.ambiguity_margin >= 0.0 && cfg.method_settings.guard.ambiguity_margin <= 1.0))
+    throw krp::InputError("--guard-ambiguity-margin", "must be in [0, 1]");
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");
   if (!calibration.empty()) {
     if (!fit_calibration.empty())

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // krp-localize: runs the particle filter over a rawlog, pf-localization style (INI + flags).
 #include <mrpt/config/CConfigFile.h>
+#include <mrpt/poses/CPose2D.h>
 
 #include <chrono>
 #include <filesystem>
@@ -293,15 +294,16 @@ static int run(int argc, char** argv) {
   if (krp::methodUsesLookAlikeGuard(s["method"])) loc.setLookAlikeGuard(krp::makeLookAlikeGuard(*map.grid, ms));
 
   std::ostringstream csv;
-  csv << "step,x_m,y_m,phi_rad,std_xy_m,std_phi_deg,particles,cpu_s" << (truth.empty() ? "" : ",error_xy_m,error_phi_deg")
+  csv << "step,x_m,y_m,phi_rad,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s" << (truth.empty() ? "" : ",error_xy_m,error_phi_deg")
       << "\n";
   std::vector<krp::UpdateRecord> records;
+  krp::MclEstimate e;
   for (size_t i = 0; i < steps.size(); ++i) {
-    const auto e = loc.update(steps[i]);
+    e = loc.update(steps[i]);
     const auto r = krp::makeUpdateRecord(e, truth.empty() ? e.mean : truth[i], 0.0);
     records.push_back(r);
-    csv << i << "," << e.mean.x << "," << e.mean.y << "," << e.mean.phi << "," << r.std_xy_m << "," << r.std_phi_deg << ","
-        << e.particles << "," << e.cpu_s;
+    csv << i << "," << e.mean.x << "," << e.mean.y << "," << e.mean.phi << "," << r.spread.xy_std_m << "," << r.spread.phi_std_deg << ","
+        << r.ambiguous << "," << e.particles << "," << e.cpu_s;
     if (!truth.empty()) csv << "," << r.error_xy_m << "," << r.error_phi_deg;
     csv << "\n";
   }
@@ -312,7 +314,10 @@ static int run(int argc, char** argv) {
   sum << "krp-localize summary\ncommand: " << args.commandLine() << "\nmap: " << s["map"] << "\ninput: " << input
       << "\nmethod: " << init->name() << "\nsteps: " << steps.size() << "\ninitial particles: " << records.front().particles
       << "\nfinal particles: " << last.particles << "\nfinal pose (grid frame): " << loc.particles().getMeanVal().asString()
-      << "\nfinal std: " << last.std_xy_m << " m, " << last.std_phi_deg << " deg\n";
+      << "\nfinal std: " << last.spread.xy_std_m << " m, " << last.spread.phi_std_deg << " deg\n";
+  if (e.ambiguous_with)
+    sum << "ambiguous: a look-alike place fits the last scan nearly as well, at "
+        << mrpt::poses::CPose2D(*e.ambiguous_with).asString() << " (grid frame); the std above covers both\n";
   double cpu = 0;
   for (const auto& r : records) cpu += r.cpu_s;
   sum << "localization CPU: " << cpu << " s\n";

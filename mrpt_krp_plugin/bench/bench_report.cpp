@@ -82,7 +82,7 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, do
     MethodSummary s{g.front()->world, g.front()->lidar, g.front()->method};
     s.trials = static_cast<int>(g.size());
     std::vector<double> upd, dist, cpu, init, meanp, pupd, ferr, ferr_c, fphi_c;
-    int ok = 0, cbw = 0, seeded = 0, seed_localized = 0, seed_right = 0, seed_localized_wrong = 0, from_matcher = 0;
+    int ok = 0, cbw = 0, car = 0, seeded = 0, seed_localized = 0, seed_right = 0, seed_localized_wrong = 0, from_matcher = 0;
     for (const auto* r : g) {
       const auto& o = r->outcome;
       if (r->seed_hypotheses >= 0) {
@@ -97,6 +97,7 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, do
       meanp.push_back(o.mean_particles);
       ferr.push_back(o.final_error_xy_m);
       cbw += o.confident_but_wrong ? 1 : 0;
+      car += o.confident_and_right ? 1 : 0;
       if (!o.converged) continue;
       ++ok;
       upd.push_back(o.updates_to_convergence);
@@ -108,6 +109,7 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, do
     }
     s.success_rate = s.trials ? static_cast<double>(ok) / s.trials : 0.0;
     s.confident_wrong_rate = s.trials ? static_cast<double>(cbw) / s.trials : 0.0;
+    s.confident_right_rate = s.trials ? static_cast<double>(car) / s.trials : 0.0;
     if (seeded > 0) {
       s.seed_localized_rate = static_cast<double>(seed_localized) / seeded;
       s.seed_best_right_rate = static_cast<double>(seed_right) / seeded;
@@ -130,17 +132,17 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, do
 
 std::string summaryTable(const std::vector<MethodSummary>& summaries, const std::string& reference_method) {
   std::ostringstream o;
-  o << "| world | lidar | method | trials | success | confident-wrong | median updates | median distance m | "
+  o << "| world | lidar | method | trials | success | confident-wrong | confident-right | median updates | median distance m | "
        "median CPU s | CPU vs " << reference_method << " | initial particles | vs " << reference_method
     << " | mean particles | particle-updates | final err m (conv.) | final err deg (conv.) | final err m (all) |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& s : summaries) {
     const MethodSummary* ref = nullptr;
     for (const auto& r : summaries)
       if (r.world == s.world && r.lidar == s.lidar && r.method == reference_method) ref = &r;
     o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << s.trials << " | "
       << formatNumber(100.0 * s.success_rate, 3) << " % | " << formatNumber(100.0 * s.confident_wrong_rate, 3) << " % | "
-      << formatNumber(s.median_updates) << " | " << formatNumber(s.median_distance_m) << " | " << formatNumber(s.median_cpu_s) << " | "
+      << formatNumber(100.0 * s.confident_right_rate, 3) << " % | " << formatNumber(s.median_updates) << " | " << formatNumber(s.median_distance_m) << " | " << formatNumber(s.median_cpu_s) << " | "
       << (ref ? ratio(s.median_cpu_s, ref->median_cpu_s) : "-") << " | " << formatNumber(s.median_initial_particles, 6) << " | "
       << (ref ? ratio(s.median_initial_particles, ref->median_initial_particles) : "-") << " | "
       << formatNumber(s.median_mean_particles, 6) << " | " << formatNumber(s.median_particle_updates, 6) << " | "
@@ -159,17 +161,18 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
   std::ostringstream trials_csv, updates_csv;
   trials_csv << "world,lidar,method,trial,trial_seed,filter_seed,converged,updates_to_convergence,"
                 "distance_to_convergence_m,cpu_to_convergence_s,initial_particles,mean_particles,"
-                "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,total_cpu_s,"
+                "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,confident_and_right,total_cpu_s,"
                 "seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,kidnap_step,kidnap_tracking_before,"
                 "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s\n";
-  updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,particles,cpu_s,distance_m\n";
+  updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s,"
+                 "distance_m\n";
   for (const auto& r : records) {
     const auto& o = r.outcome;
     trials_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << r.trial_seed << ","
                << r.filter_seed << "," << o.converged << "," << o.updates_to_convergence << ","
                << o.distance_to_convergence_m << "," << o.cpu_to_convergence_s << "," << o.initial_particles << ","
                << o.mean_particles << "," << o.particle_updates_to_convergence << "," << o.final_error_xy_m << ","
-               << o.final_error_phi_deg << "," << o.confident_but_wrong << "," << o.total_cpu_s << "," << r.seed_hypotheses
+               << o.final_error_phi_deg << "," << o.confident_but_wrong << "," << o.confident_and_right << "," << o.total_cpu_s << "," << r.seed_hypotheses
                << "," << r.seed_localized << "," << r.seed_best_error_xy_m << "," << r.seed_best_confidence << ","
                << r.seed_best_from_matcher << "," << r.kidnap_step << ","
                << r.kidnap.tracking_before << "," << r.kidnap.updates_to_detect << "," << r.kidnap.recovered << ","
@@ -177,7 +180,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
     for (size_t i = 0; i < r.updates.size(); ++i) {
       const auto& u = r.updates[i];
       updates_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << i << "," << u.error_xy_m
-                  << "," << u.error_phi_deg << "," << u.std_xy_m << "," << u.std_phi_deg << "," << u.particles << ","
+                  << "," << u.error_phi_deg << "," << u.spread.xy_std_m << "," << u.spread.phi_std_deg << "," << u.ambiguous << "," << u.particles << ","
                   << u.cpu_s << "," << u.distance_m << "\n";
     }
   }
@@ -190,11 +193,12 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
   j["trials_per_pair"] = cfg.trials;
   j["criteria"] = {{"max_error_xy_m", cfg.criteria.max_error_xy_m},
                    {"max_error_phi_deg", cfg.criteria.max_error_phi_deg},
-                   {"confident_std_xy_m", cfg.criteria.confident_std_xy_m},
-                   {"confident_std_phi_deg", cfg.criteria.confident_std_phi_deg}};
+                   {"confident_std_xy_m", cfg.criteria.confident.xy_std_m},
+                   {"confident_std_phi_deg", cfg.criteria.confident.phi_std_deg}};
   for (const auto& s : summaries)
     j["summary"].push_back({{"world", s.world}, {"lidar", s.lidar}, {"method", s.method}, {"trials", s.trials},
                             {"success_rate", s.success_rate}, {"confident_wrong_rate", s.confident_wrong_rate},
+                            {"confident_right_rate", s.confident_right_rate},
                             {"median_updates_to_convergence", s.median_updates},
                             {"median_distance_to_convergence_m", s.median_distance_m},
                             {"median_cpu_to_convergence_s", s.median_cpu_s},
@@ -253,9 +257,12 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
      << cfg.criteria.max_error_xy_m << " m and " << cfg.criteria.max_error_phi_deg
      << " deg of the truth at some update and every later one; \"updates\" counts filter updates up to that one "
         "(1 = from the first scan). CPU is the thread CPU time of the localization code only (simulation excluded). "
-        "Confident-but-wrong: at the last update the filter's largest xy std is below "
-     << cfg.criteria.confident_std_xy_m << " m and its heading std below " << cfg.criteria.confident_std_phi_deg
-     << " deg, yet the mean is outside tolerance. Medians of updates, distance, CPU and particle-updates are over "
+        "Confident: at the last update the largest xy std of the filter's reported covariance is below "
+     << cfg.criteria.confident.xy_std_m << " m and its heading std below " << cfg.criteria.confident.phi_std_deg
+     << " deg; for the methods with the look-alike guard that covariance is widened to cover a place that fits "
+        "the scan nearly as well (the filter reports itself ambiguous), so an ambiguous answer is not confident. "
+        "Confident-wrong: confident, yet the mean is outside tolerance; confident-right: confident and within it "
+        "(the share of trials where the method both is right and says so). Medians of updates, distance, CPU and particle-updates are over "
         "converged trials. Ratios are against uniform-mcl in this same run.\n\n"
      << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m)
      << reliabilitySections(records, cfg.criteria.max_error_xy_m)

@@ -15,6 +15,7 @@ struct MethodSummary {
   int trials = 0;
   double success_rate = 0.0;                 ///< converged / trials
   double confident_wrong_rate = 0.0;         ///< confident but wrong / trials
+  double confident_right_rate = 0.0;         ///< confident and right at the end / trials: what hedging costs
   double median_updates = 0.0;               ///< over converged trials
   double median_distance_m = 0.0;            ///< over converged trials
   double median_cpu_s = 0.0;                 ///< CPU to convergence, over converged trials

@@ -15,11 +15,8 @@ UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& t
   UpdateRecord r;
   r.error_xy_m = std::hypot(e.mean.x - truth.x, e.mean.y - truth.y);
   r.error_phi_deg = std::abs(mrpt::math::wrapToPi(e.mean.phi - truth.phi)) * 180.0 / M_PI;
-  // Largest eigenvalue of the 2x2 xy block, in closed form.
-  const double a = e.cov(0, 0), b = e.cov(0, 1), d = e.cov(1, 1);
-  const double lambda = 0.5 * (a + d) + std::sqrt(0.25 * (a - d) * (a - d) + b * b);
-  r.std_xy_m = std::sqrt(std::max(0.0, lambda));
-  r.std_phi_deg = std::sqrt(std::max(0.0, e.cov(2, 2))) * 180.0 / M_PI;
+  r.spread = filterSpread(e.cov);
+  r.ambiguous = e.ambiguous_with.has_value();
   r.particles = e.particles;
   r.cpu_s = e.cpu_s;
   r.distance_m = distance_m;
@@ -55,7 +52,9 @@ TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& u, const Convergence
   const auto& last = u.back();
   o.final_error_xy_m = last.error_xy_m;
   o.final_error_phi_deg = last.error_phi_deg;
-  o.confident_but_wrong = !within(last) && last.std_xy_m < c.confident_std_xy_m && last.std_phi_deg < c.confident_std_phi_deg;
+  const bool confident = isConcentrated(last.spread, c.confident);
+  o.confident_but_wrong = confident && !within(last);
+  o.confident_and_right = confident && within(last);
   return o;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "mrpt_krp_plugin/filter/filter_spread.h"
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
 
 namespace krp {
@@ -13,8 +14,10 @@ namespace krp {
 struct ConvergenceCriteria {
   double max_error_xy_m = 0.5;       ///< mean within this of the truth [m]
   double max_error_phi_deg = 10.0;   ///< and within this heading [deg]
-  double confident_std_xy_m = 0.5;   ///< filter spread below this (largest xy std) reads as confident [m]
-  double confident_std_phi_deg = 10.0;  ///< and heading std below this [deg]
+  /// The filter's reported spread below these reads as confident. Its covariance includes a
+  /// look-alike place the guard found (MclEstimate::ambiguous_with), so an ambiguous estimate is
+  /// not confident however tight its particles are.
+  ConcentrationThresholds confident;
 };
 
 /// An error within the criteria's position and heading tolerance.
@@ -24,8 +27,8 @@ bool withinTolerance(double error_xy_m, double error_phi_deg, const ConvergenceC
 struct UpdateRecord {
   double error_xy_m = 0.0;
   double error_phi_deg = 0.0;
-  double std_xy_m = 0.0;     ///< sqrt of the largest eigenvalue of the xy covariance [m]
-  double std_phi_deg = 0.0;
+  FilterSpread spread;       ///< of the filter's reported covariance
+  bool ambiguous = false;    ///< the filter reported a look-alike place (MclEstimate::ambiguous_with)
   std::size_t particles = 0;
   double cpu_s = 0.0;
   double distance_m = 0.0;   ///< true distance travelled up to this update [m]
@@ -46,6 +49,7 @@ struct TrialOutcome {
   double final_error_xy_m = 0.0;
   double final_error_phi_deg = 0.0;
   bool confident_but_wrong = false;  ///< at the last update: spread small, pose outside tolerance
+  bool confident_and_right = false;  ///< at the last update: spread small, pose within tolerance
   double total_cpu_s = 0.0;
 };
 

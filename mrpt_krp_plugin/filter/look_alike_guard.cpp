@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/filter/look_alike_guard.h"
 
+#include <mrpt/math/wrap2pi.h>
+
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace krp {
@@ -11,17 +14,44 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
   if (!matcher_) throw std::invalid_argument("LookAlikeGuard: no matcher");
   if (params_.moved_share <= 0.0 || params_.moved_share > 1.0)
     throw std::invalid_argument("LookAlikeGuard: moved_share must be in (0, 1]");
+  if (params_.score_margin < 0.0 || params_.score_margin > 1.0 || params_.ambiguity_margin < 0.0 ||
+      params_.ambiguity_margin > 1.0)
+    throw std::invalid_argument("LookAlikeGuard: score_margin and ambiguity_margin must be in [0, 1]");
+  if (params_.ambiguity_margin < params_.score_margin)
+    throw std::invalid_argument("LookAlikeGuard: ambiguity_margin must be at least score_margin");
+  if (params_.recheck_every_updates < 0 || params_.remembered_rejected < 0)
+    throw std::invalid_argument("LookAlikeGuard: recheck_every_updates and remembered_rejected must be 0 or more");
+  RivalTest check_params({}, params_.rival_test);  // refuses bad test parameters here, not mid-run
 }
 
-std::optional<mrpt::math::TPose2D> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
-                                                             const mrpt::math::TPose2D& pose) const {
+std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                   const mrpt::math::TPose2D& pose,
+                                                   const std::vector<mrpt::math::TPoint2D>& also_excluded) const {
+  LookAlike place;
+  place.tracked_score = matcher_->scoreAt(scan, pose);
   MatchRequest request;
-  request.min_score = std::max(matcher_->scoreAt(scan, pose) - params_.score_margin, matcher_->params().min_score);
+  request.min_score = std::max(place.tracked_score - params_.ambiguity_margin, matcher_->params().min_score);
   request.solutions = 1;
   request.excluded = {{pose.x, pose.y}};  // the tracked place found again is no alternative to it
+  request.excluded.insert(request.excluded.end(), also_excluded.begin(), also_excluded.end());
   const auto found = matcher_->match(scan, request);
   if (found.empty()) return std::nullopt;
-  return found.front().pose;
+  place.pose = found.front().pose;
+  place.score = found.front().score;
+  return place;
+}
+
+bool LookAlikeGuard::samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) const {
+  return std::hypot(a.x - b.x, a.y - b.y) < matcher_->params().exclusion_m;
+}
+
+mrpt::math::CMatrixDouble33 covarianceWithLookAlike(const mrpt::math::CMatrixDouble33& cov, const mrpt::math::TPose2D& mean,
+                                                    const mrpt::math::TPose2D& other) {
+  const double d[3] = {other.x - mean.x, other.y - mean.y, mrpt::math::wrapToPi(other.phi - mean.phi)};
+  auto out = cov;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out(i, j) += 0.5 * d[i] * d[j];
+  return out;
 }
 
 }  // namespace krp

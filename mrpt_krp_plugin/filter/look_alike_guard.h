@@ -1,51 +1,88 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include <memory>
 #include <optional>
+#include <vector>
 
+#include "mrpt_krp_plugin/filter/filter_spread.h"
+#include "mrpt_krp_plugin/filter/rival_test.h"
 #include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
 
 namespace krp {
 
-/// When the particle filter has just converged, a look-alike place may fit the scan as well: in
-/// a mirror-like building the particles can collapse onto the wrong wing, and the scan fit there
-/// stays high, so kidnap detection never fires. The guard asks the correlative matcher for a
-/// place that fits at least as well as the filter's mean (the mean's own score as the bar, so
-/// most branches are pruned) and, when there is one, moves a share of the particles there: the
-/// next scans decide between the two, and until they do the filter does not claim a pose.
+/// When the particle filter has converged, a look-alike place may fit the scan as well: in a
+/// mirror-like building the particles can collapse onto the wrong wing, and the scan fit there
+/// stays high, so kidnap detection never fires. The guard asks the correlative matcher for the
+/// best place away from the filter's mean that fits nearly as well (the mean's own score, less a
+/// margin, as the bar, so most branches are pruned). What the filter does with the answer:
+/// - a place that fits at least as well (score_margin): a share of the particles moves there,
+///   once per convergence, and the next scans decide between the two;
+/// - a place that fits nearly as well (ambiguity_margin): the estimate is reported as ambiguous,
+///   its covariance widened to cover that place, while a RivalTest weighs the scans that follow;
+///   when they favour the tracked pose the place is set aside (and left out of later searches),
+///   when they favour the place a share of the particles moves there.
 struct LookAlikeGuardParams {
-  /// The filter counts as converged (and is checked, once per convergence) when the larger of
-  /// its x and y std (covariance diagonal) is below this and its heading std below the next
-  /// [m], [deg]. The bench's "confident" has the same thresholds but takes the largest
-  /// eigenvalue of the xy covariance, so a cloud stretched along a diagonal can count as
-  /// converged here a little before the bench calls it confident.
-  double converged_std_m = 0.5;
-  double converged_std_deg = 10.0;
-  /// A place counts as a look-alike when it scores at least the mean's matcher score minus this
+  /// The filter counts as converged (and is checked) when its particles' spread is below these.
+  ConcentrationThresholds converged;
+  /// A place moves particles when it scores at least the mean's matcher score minus this
   /// [0..1]. Zero: only places that fit as well or better; a converged filter on the right pose
   /// is then rarely disturbed by a place that fits a little worse.
   double score_margin = 0.0;
+  /// A place makes the estimate ambiguous when it scores at least the mean's score minus this
+  /// [0..1]; at least score_margin. The wider it is, the more honest the filter's confidence in
+  /// repetitive buildings, and the more often a right pose is reported as not yet certain.
+  double ambiguity_margin = 0.05;
+  /// While converged and no rival is under test, the search is repeated every this many updates
+  /// (a look-alike can appear as the robot moves). 0: only at each fresh convergence.
+  int recheck_every_updates = 1;
+  RivalTestParams rival_test;  ///< how a look-alike that fits nearly as well is decided
+  /// Rivals decided against are left out of later searches while the filter stays converged; the
+  /// oldest is forgotten beyond this many (their odometry-moved positions age).
+  int remembered_rejected = 4;
   double moved_share = 0.5;  ///< share of the particles moved to the look-alike place [0..1]
   double spread_m = 0.1;     ///< std of the moved particles around it, position [m]
   double spread_deg = 3.0;   ///< ... and heading [deg]
 };
 
+/// A place other than the tracked one that fits the scan nearly as well.
+struct LookAlike {
+  mrpt::math::TPose2D pose;
+  double score = 0.0;          ///< its matcher score [0..1]
+  double tracked_score = 0.0;  ///< the tracked pose's matcher score [0..1]
+};
+
 class LookAlikeGuard {
  public:
+  /// Throws std::invalid_argument for a share outside (0, 1], margins outside [0, 1] or an
+  /// ambiguity margin below the score margin.
   LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher, LookAlikeGuardParams params = {});
 
-  /// A place other than `pose` that fits `scan` at least as well (by the bar above), if any.
-  std::optional<mrpt::math::TPose2D> lookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
-                                               const mrpt::math::TPose2D& pose) const;
+  /// The best place at least the matcher's exclusion distance from `pose` (and from each of
+  /// `also_excluded`) that scores within ambiguity_margin of it, if any.
+  std::optional<LookAlike> lookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
+                                     const std::vector<mrpt::math::TPoint2D>& also_excluded = {}) const;
+  /// It fits at least as well as the tracked pose (by score_margin): particles should move there.
+  bool fitsAtLeastAsWell(const LookAlike& place) const {
+    return place.score >= place.tracked_score - params_.score_margin;
+  }
+  /// Closer than the matcher's exclusion distance: one place, not two.
+  bool samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) const;
   const LookAlikeGuardParams& params() const { return params_; }
 
  private:
   std::shared_ptr<const CorrelativeMatcher> matcher_;
   LookAlikeGuardParams params_;
 };
+
+/// `cov` around `mean`, widened to cover `other` as an equally likely second place: the spread
+/// of the two places about the mean (half the outer product of their offset) is added, so a
+/// consumer that reads only the covariance sees that the pose is not settled.
+mrpt::math::CMatrixDouble33 covarianceWithLookAlike(const mrpt::math::CMatrixDouble33& cov, const mrpt::math::TPose2D& mean,
+                                                    const mrpt::math::TPose2D& other);
 
 }  // namespace krp

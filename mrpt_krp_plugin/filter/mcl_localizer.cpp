@@ -20,20 +20,35 @@ double threadCpuSeconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
+namespace {
+
+/// The robot's motion since the last update, as the action records it (zero when it does not).
+mrpt::poses::CPose2D odometryIncrement(const mrpt::obs::CActionCollection& action) {
+  const auto move = action.getBestMovementEstimation();
+  if (!move || !move->poseChange) return {};
+  return move->poseChange->getMeanVal();
+}
+
+}  // namespace
+
+void useSensorModel(mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor) {
+  auto& lo = map.likelihoodOptions;
+  lo.likelihoodMethod = mrpt::maps::COccupancyGridMap2D::lmLikelihoodField_Thrun;
+  lo.LF_decimation = static_cast<uint32_t>(sensor.decimation);
+  lo.LF_stdHit = static_cast<float>(sensor.std_hit_m);
+  lo.LF_maxCorrsDistance = static_cast<float>(sensor.max_corr_distance_m);
+  lo.LF_zHit = static_cast<float>(sensor.z_hit);
+  lo.LF_zRandom = static_cast<float>(sensor.z_random);
+  lo.LF_useSquareDist = false;
+  lo.enableLikelihoodCache = true;
+}
+
 MclLocalizer::MclLocalizer(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
                            std::shared_ptr<ParticleInitializer> init, MclParams params)
     // The filter needs its own copy: MRPT caches the likelihood field inside the map.
     : map_(std::make_shared<mrpt::maps::COccupancyGridMap2D>(*map)), init_(std::move(init)), params_(params),
       kidnap_(params.kidnap) {
-  auto& lo = map_->likelihoodOptions;
-  lo.likelihoodMethod = mrpt::maps::COccupancyGridMap2D::lmLikelihoodField_Thrun;
-  lo.LF_decimation = static_cast<uint32_t>(params_.sensor.decimation);
-  lo.LF_stdHit = static_cast<float>(params_.sensor.std_hit_m);
-  lo.LF_maxCorrsDistance = static_cast<float>(params_.sensor.max_corr_distance_m);
-  lo.LF_zHit = static_cast<float>(params_.sensor.z_hit);
-  lo.LF_zRandom = static_cast<float>(params_.sensor.z_random);
-  lo.LF_useSquareDist = false;
-  lo.enableLikelihoodCache = true;
+  useSensorModel(*map_, params_.sensor);
   pf_.options.metricMap = map_;
   auto& o = filter_.m_options;
   o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
@@ -64,19 +79,8 @@ void MclLocalizer::resampleSystematicIfNeeded() {
   }
 }
 
-bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
-                                    const mrpt::math::CMatrixDouble33& cov) {
+void MclLocalizer::moveShareOfParticlesTo(const mrpt::math::TPose2D& place) {
   const auto& gp = guard_->params();
-  const bool converged = std::max(std::sqrt(cov(0, 0)), std::sqrt(cov(1, 1))) < gp.converged_std_m &&
-                         std::sqrt(cov(2, 2)) * 180.0 / M_PI < gp.converged_std_deg;
-  if (!converged) {
-    convergence_checked_ = false;  // the next convergence is checked again
-    return false;
-  }
-  if (convergence_checked_) return false;
-  convergence_checked_ = true;
-  const auto other = guard_->lookAlike(scan, mean);
-  if (!other) return false;
   // Every k-th particle moves, so the share is exact and the rest keep their spread.
   const size_t every = std::max<size_t>(1, static_cast<size_t>(std::lround(1.0 / gp.moved_share)));
   Rng rng(deriveSeed(params_.seed ^ 0x9e3779b97f4a7c15ull, ++guard_draws_));
@@ -85,10 +89,70 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
     auto& p = pf_.m_particles[i];
     p.log_w = 0.0;  // both places start even: the next scans decide
     if (i % every != 0) continue;
-    p.d = mrpt::math::TPose2D(rng.normal(other->x, gp.spread_m), rng.normal(other->y, gp.spread_m),
-                              mrpt::math::wrapToPi(rng.normal(other->phi, spread_rad)));
+    p.d = mrpt::math::TPose2D(rng.normal(place.x, gp.spread_m), rng.normal(place.y, gp.spread_m),
+                              mrpt::math::wrapToPi(rng.normal(place.phi, spread_rad)));
   }
-  return true;
+}
+
+void MclLocalizer::rememberRejected(const mrpt::math::TPose2D& place) {
+  rejected_.push_back(place);
+  while (rejected_.size() > static_cast<size_t>(guard_->params().remembered_rejected)) rejected_.pop_front();
+}
+
+bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
+                                    const mrpt::math::CMatrixDouble33& cov, const mrpt::poses::CPose2D& increment) {
+  const auto& gp = guard_->params();
+  if (!isConcentrated(filterSpread(cov), gp.converged)) {
+    // A spread-out filter says for itself that it is not settled; the next convergence starts afresh.
+    converged_ = false;
+    rival_.reset();
+    rejected_.clear();
+    return false;
+  }
+  const bool fresh = !converged_;
+  converged_ = true;
+  for (auto& place : rejected_) place = (mrpt::poses::CPose2D(place) + increment).asTPose();
+  std::optional<RivalTest::Verdict> verdict;
+  if (rival_) {
+    rival_->move(increment);
+    verdict = rival_->update(*map_, scan, mean);
+    // Re-fitted scan after scan, a rival along a corridor can slide onto the mean: then it is
+    // the same place, no longer an alternative, and a fresh search follows.
+    if (guard_->samePlace(rival_->rival(), mean)) rival_.reset();
+  }
+  if (rival_) {
+    if (*verdict == RivalTest::Verdict::undecided) return false;
+    const auto place = rival_->rival();
+    rival_.reset();
+    updates_since_check_ = 0;
+    if (*verdict == RivalTest::Verdict::rival_wins) {
+      moveShareOfParticlesTo(place);
+      return true;
+    }
+    rememberRejected(place);
+    return false;
+  }
+  ++updates_since_check_;
+  const bool due = fresh || (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
+  if (!due) return false;
+  updates_since_check_ = 0;
+  std::vector<mrpt::math::TPoint2D> excluded;
+  for (const auto& place : rejected_) excluded.emplace_back(place.x, place.y);
+  const auto found = guard_->lookAlike(scan, mean, excluded);
+  if (!found) return false;
+  // A place that fits at least as well at a fresh convergence gets particles at once. Later,
+  // and for places that fit a little worse, the scans that follow decide first: moving
+  // particles at every check would keep a filter that is right from ever settling.
+  if (fresh && guard_->fitsAtLeastAsWell(*found)) {
+    moveShareOfParticlesTo(found->pose);
+    return true;
+  }
+  rival_.emplace(found->pose, gp.rival_test);
+  if (rival_->update(*map_, scan, mean) == RivalTest::Verdict::tracked_wins) {
+    rememberRejected(rival_->rival());
+    rival_.reset();
+  }
+  return false;
 }
 
 MclEstimate MclLocalizer::update(const RawlogStep& step) {
@@ -101,7 +165,9 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     ++initializations_;
     e.initialized = true;
     kidnap_.reset();
-    convergence_checked_ = false;
+    converged_ = false;
+    rival_.reset();
+    rejected_.clear();
   }
   auto action = step.action;
   if (!action) {
@@ -117,12 +183,16 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
 
   auto [cov, mean] = pf_.getCovarianceAndMean();
   const auto scan = step.observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
-  if (guard_ && scan && guardConvergence(*scan, mean.asTPose(), cov)) {
+  if (guard_ && scan && guardConvergence(*scan, mean.asTPose(), cov, odometryIncrement(*action))) {
     e.look_alike_found = true;
     std::tie(cov, mean) = pf_.getCovarianceAndMean();
   }
-  e.cov = cov;
   e.mean = mean.asTPose();
+  e.cov = cov;
+  if (rival_) {
+    e.ambiguous_with = rival_->rival();
+    e.cov = covarianceWithLookAlike(cov, e.mean, rival_->rival());
+  }
   if (fit_scorer_ && scan) {
     e.fit_fraction = fit_scorer_->score(*scan, e.mean).fit_fraction;
     e.kidnap_detected = kidnap_.update(e.fit_fraction);

@@ -5,7 +5,9 @@
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 
+#include <deque>
 #include <memory>
+#include <optional>
 
 #include "mrpt_krp_plugin/filter/kidnap_detector.h"
 #include "mrpt_krp_plugin/filter/look_alike_guard.h"
@@ -24,6 +26,9 @@ struct SensorModelParams {
   double z_random = 0.05;        ///< weight of random returns [0..1]
 };
 
+/// Sets `map`'s likelihood options to this sensor model (MRPT keeps them, and a cache, in the map).
+void useSensorModel(mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor);
+
 struct MclParams {
   SensorModelParams sensor;
   double resample_below_ess = 0.5;  ///< systematic resampling when ESS/N drops below this [0..1]
@@ -34,6 +39,8 @@ struct MclParams {
 /// One filter update's outcome.
 struct MclEstimate {
   mrpt::math::TPose2D mean;
+  /// The particles' covariance; widened to cover `ambiguous_with` when the guard found one, so
+  /// that whoever reads only the covariance sees an unsettled pose.
   mrpt::math::CMatrixDouble33 cov;
   std::size_t particles = 0;
   double cpu_s = 0.0;  ///< thread CPU time of this update (localization code only) [s]
@@ -41,6 +48,10 @@ struct MclEstimate {
   bool initialized = false;    ///< the initializer ran at this update (the first, or after a kidnap)
   bool kidnap_detected = false;  ///< this update completed a kidnap: the next one re-initializes
   bool look_alike_found = false;  ///< the filter had converged and the guard moved particles to a look-alike place
+  /// The filter has converged, but this place fit a scan nearly as well (LookAlikeGuard's
+  /// ambiguity_margin) and the scans since have not yet told the two apart (RivalTest): the
+  /// mean is one of two candidates, not yet a pose to drive on.
+  std::optional<mrpt::math::TPose2D> ambiguous_with;
 };
 
 /// MRPT's CMonteCarloLocalization2D driven step by step, with the start chosen by a
@@ -59,7 +70,7 @@ class MclLocalizer {
   /// call after a detected kidnap.
   MclEstimate update(const RawlogStep& step);
 
-  /// Checks each convergence for a look-alike place (LookAlikeGuard); null: no check.
+  /// Checks the converged filter for a look-alike place (LookAlikeGuard); null: no check.
   void setLookAlikeGuard(std::shared_ptr<const LookAlikeGuard> guard) { guard_ = std::move(guard); }
 
   /// The next update runs the initializer again (a user asked to relocalize).
@@ -71,9 +82,14 @@ class MclLocalizer {
 
  private:
   void resampleSystematicIfNeeded();
-  /// The guard's check of a fresh convergence; true when particles were moved.
+  /// The guard's check of a converged filter (searches, or weighs the rival under test);
+  /// true when particles were moved. `increment`: the robot's odometry since the last update.
   bool guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
-                        const mrpt::math::CMatrixDouble33& cov);
+                        const mrpt::math::CMatrixDouble33& cov, const mrpt::poses::CPose2D& increment);
+  /// Leaves `place` out of later searches (the oldest beyond the guard's memory is forgotten).
+  void rememberRejected(const mrpt::math::TPose2D& place);
+  /// The guard's share of the particles, spread around `place`; every weight reset.
+  void moveShareOfParticlesTo(const mrpt::math::TPose2D& place);
 
   std::shared_ptr<mrpt::maps::COccupancyGridMap2D> map_;
   std::shared_ptr<ParticleInitializer> init_;
@@ -86,7 +102,10 @@ class MclLocalizer {
   std::unique_ptr<ScanFitScorer> fit_scorer_;  ///< only with kidnap detection
   KidnapDetector kidnap_;
   std::shared_ptr<const LookAlikeGuard> guard_;
-  bool convergence_checked_ = false;  ///< the guard has checked the filter's current convergence
+  bool converged_ = false;              ///< the particles were concentrated at the last update
+  int updates_since_check_ = 0;         ///< converged updates since the guard last searched
+  std::optional<RivalTest> rival_;      ///< a look-alike being weighed against the mean
+  std::deque<mrpt::math::TPose2D> rejected_;  ///< look-alikes the scans decided against, moved by odometry
   uint64_t guard_draws_ = 0;
 };
 

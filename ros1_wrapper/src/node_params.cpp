@@ -85,6 +85,7 @@ const std::map<std::string, Reader>& readers() {
       {"max_particles", integer(&NodeParams::max_particles, 100, 1000000)},
       {"uniform_fraction", number(&NodeParams::uniform_fraction, 0.0, 0.99)},
       {"look_alike_guard", boolean(&NodeParams::look_alike_guard)},
+      {"look_alike_ambiguity_margin", number(&NodeParams::look_alike_ambiguity_margin, 0.0, 1.0)},
   };
   return r;
 }
@@ -152,6 +153,12 @@ KidnapDetectorParams NodeParams::kidnap() const {
   KidnapDetectorParams k;
   k.enabled = relocalize_on_kidnap;
   return k;
+}
+
+LookAlikeGuardParams NodeParams::lookAlikeGuard() const {
+  LookAlikeGuardParams g;
+  g.ambiguity_margin = look_alike_ambiguity_margin;
+  return g;
 }
 
 }  // namespace krp::ros1

@@ -6,6 +6,7 @@
 #include <ros/node_handle.h>
 
 #include "mrpt_krp_plugin/filter/kidnap_detector.h"
+#include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/filter/odometry_tracker.h"
 #include "mrpt_krp_plugin/filter/seeded_initializer.h"
 #include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
@@ -42,13 +43,16 @@ struct NodeParams {
   double update_min_a = 0.5236;        ///< `track`: or this much turn [rad]
   int max_particles = 5000;            ///< `track`: cap of the seeded particle cloud
   double uniform_fraction = 0.05;      ///< `track`: share of particles spread uniformly [0..1)
-  bool look_alike_guard = true;        ///< `track`: check each convergence for a look-alike place (LookAlikeGuard)
+  bool look_alike_guard = true;        ///< `track`: check the converged filter for a look-alike place (LookAlikeGuard)
+  /// `track`: a look-alike scoring within this of the tracked pose makes it ambiguous [0..1]
+  double look_alike_ambiguity_margin = LookAlikeGuardParams{}.ambiguity_margin;
 
   // Derived library parameters.
   HypothesisSourceParams hypothesisSource() const;
   SeededInitParams seeded() const;
   OdometryTrackerParams tracker() const;
   KidnapDetectorParams kidnap() const;
+  LookAlikeGuardParams lookAlikeGuard() const;
 };
 
 /// Reads the private parameters. InputError naming the key for an unknown key (a typo would

@@ -10,6 +10,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "mrpt_krp_plugin/common/input_error.h"
@@ -127,7 +128,8 @@ void RelocalizerNode::useMap(OccupancyMap map) {
     mcl.kidnap = params_.kidnap();
     state->tracker = std::make_shared<OdometryTracker>(grid, state->seeding, mcl, params_.tracker());
     if (params_.look_alike_guard)
-      state->tracker->setLookAlikeGuard(std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(*grid)));
+      state->tracker->setLookAlikeGuard(std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(*grid),
+                                                                                params_.lookAlikeGuard()));
   }
   std::ostringstream s;
   s << "map in use: " << state->map->source << " (" << grid->getSizeX() << " x " << grid->getSizeY() << " cells)";
@@ -409,6 +411,14 @@ void RelocalizerNode::track(TrackJob& job) {
   mean.pose = u->estimate.mean;
   mean.cov = u->estimate.cov;
   amcl_pose_pub_.publish(initialPoseMsg(mean, map, header));
+  if (u->estimate.ambiguous_with) {
+    // A warning rather than silence: a consumer that ignores the covariance must still hear it.
+    const auto other = map.toSourceFrame(*u->estimate.ambiguous_with);
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(1) << "pose ambiguous: a look-alike place at (" << other.x << ", " << other.y
+      << ") fits the scan nearly as well; the published covariance covers both";
+    report(s.str(), true);
+  }
   geometry_msgs::PoseArray cloud;
   cloud.header = header;
   const auto& pf = job.state->tracker->localizer().particles();

@@ -14,8 +14,8 @@ UpdateRecord rec(double err_m, double err_deg, double std_m, size_t particles, d
   UpdateRecord r;
   r.error_xy_m = err_m;
   r.error_phi_deg = err_deg;
-  r.std_xy_m = std_m;
-  r.std_phi_deg = 2.0;
+  r.spread.xy_std_m = std_m;
+  r.spread.phi_std_deg = 2.0;
   r.particles = particles;
   r.cpu_s = cpu;
   r.distance_m = dist;
@@ -42,10 +42,13 @@ TEST(TrialMetrics, ConfidentButWrongIsSmallSpreadWithWrongPose) {
   EXPECT_FALSE(wrong_tight.converged);
   EXPECT_EQ(wrong_tight.updates_to_convergence, -1);
   EXPECT_TRUE(wrong_tight.confident_but_wrong);
+  EXPECT_FALSE(wrong_tight.confident_and_right);
   const auto wrong_wide = evaluateTrial({rec(12, 180, 4.0, 100, 1, 0)}, {});
   EXPECT_FALSE(wrong_wide.confident_but_wrong);
   const auto first_scan = evaluateTrial({rec(0.1, 1, 0.1, 100, 1, 0), rec(0.1, 1, 0.1, 100, 1, 0.2)}, {});
   EXPECT_EQ(first_scan.updates_to_convergence, 1);
+  EXPECT_TRUE(first_scan.confident_and_right);
+  EXPECT_FALSE(evaluateTrial({rec(0.1, 1, 0.9, 100, 1, 0)}, {}).confident_and_right) << "right but spread out";
   EXPECT_NEAR(first_scan.distance_to_convergence_m, 0.0, 1e-12);
 }
 
@@ -65,8 +68,8 @@ TEST(TrialMetrics, UpdateRecordFromEstimate) {
   const auto r = makeUpdateRecord(e, {1.3, 2.4, 0.1 + M_PI / 18}, 1.5);
   EXPECT_NEAR(r.error_xy_m, 0.5, 1e-9);
   EXPECT_NEAR(r.error_phi_deg, 10.0, 1e-9);
-  EXPECT_NEAR(r.std_xy_m, 0.2, 1e-9);
-  EXPECT_NEAR(r.std_phi_deg, 5.0, 1e-9);
+  EXPECT_NEAR(r.spread.xy_std_m, 0.2, 1e-9);
+  EXPECT_NEAR(r.spread.phi_std_deg, 5.0, 1e-9);
   EXPECT_EQ(r.particles, 42u);
 }
 

@@ -21,6 +21,8 @@ namespace {
 // and the block tell them apart, so the twin fits the truth's scan less well.
 const mrpt::math::TPose2D kTruth(5.52, 2.07, 0.8);
 const mrpt::math::TPose2D kTwin(9.0 - 5.52, 7.0 - 2.07, mrpt::math::wrapToPi(0.8 + M_PI));
+/// More than the twin's matcher score falls short of the truth's on the truth's scans.
+constexpr double kTwinShortfallBound = 0.3;
 
 mrpt::obs::CObservation2DRangeScan::Ptr scanAtTruth(const mrpt::maps::COccupancyGridMap2D& room, uint64_t seed) {
   Rng rng(seed);
@@ -29,14 +31,46 @@ mrpt::obs::CObservation2DRangeScan::Ptr scanAtTruth(const mrpt::maps::COccupancy
 
 double distance(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
+LookAlikeGuardParams withAmbiguityMargin(double margin) {
+  LookAlikeGuardParams p;
+  p.ambiguity_margin = margin;
+  return p;
+}
+
 TEST(LookAlikeGuard, FindsTheBetterPlaceOnlyFromTheWrongOne) {
   const auto room = test::asymmetricRoom();
-  const LookAlikeGuard guard(std::make_shared<CorrelativeMatcher>(room));
+  const LookAlikeGuard guard(std::make_shared<CorrelativeMatcher>(room), withAmbiguityMargin(0.0));
   const auto scan = scanAtTruth(room, 1);
   const auto from_twin = guard.lookAlike(*scan, kTwin);
   ASSERT_TRUE(from_twin.has_value());
-  EXPECT_LT(distance(*from_twin, kTruth), 0.2);
+  EXPECT_LT(distance(from_twin->pose, kTruth), 0.2);
+  EXPECT_GT(from_twin->score, from_twin->tracked_score);
+  EXPECT_TRUE(guard.fitsAtLeastAsWell(*from_twin));
   EXPECT_FALSE(guard.lookAlike(*scan, kTruth).has_value()) << "the twin fits worse than the truth";
+}
+
+TEST(LookAlikeGuard, RefusesMarginsThatContradictEachOther) {
+  const auto matcher = std::make_shared<CorrelativeMatcher>(test::asymmetricRoom());
+  LookAlikeGuardParams p;
+  p.score_margin = 0.1;
+  p.ambiguity_margin = 0.05;
+  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
+  p.ambiguity_margin = 1.5;
+  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
+}
+
+TEST(LookAlikeGuard, WidenedCovarianceCoversBothPlaces) {
+  mrpt::math::CMatrixDouble33 cov;
+  cov.setZero();
+  cov(0, 0) = cov(1, 1) = 0.01;
+  cov(2, 2) = 0.001;
+  const auto wide = covarianceWithLookAlike(cov, {1.0, 1.0, 0.0}, {3.0, 1.0, 0.0});
+  EXPECT_NEAR(wide(0, 0), 0.01 + 0.5 * 4.0, 1e-12) << "half the squared 2 m offset along x";
+  EXPECT_NEAR(wide(1, 1), 0.01, 1e-12);
+  EXPECT_NEAR(wide(0, 1), 0.0, 1e-12);
+  EXPECT_FALSE(isConcentrated(filterSpread(wide), {}));
+  const auto turned = covarianceWithLookAlike(cov, {0.0, 0.0, 3.1}, {0.0, 0.0, -3.1});
+  EXPECT_NEAR(turned(2, 2), 0.001 + 0.5 * std::pow(2.0 * M_PI - 6.2, 2), 1e-9) << "the short way round";
 }
 
 /// Puts every particle tightly on one pose: a filter that has converged there.
@@ -85,6 +119,47 @@ TEST(LookAlikeGuard, MovesAFilterCollapsedOnTheTwinToTheTruth) {
   EXPECT_EQ(found, 1) << "one convergence, one check that moved particles";
   EXPECT_LT(distance(guarded.mean, kTruth), 0.2);
   EXPECT_LT(std::sqrt(guarded.cov(0, 0)), 0.5) << "and it converged there";
+}
+
+// A filter that is right, in a room whose twin pose fits its scans nearly as well (with an
+// ambiguity margin wider than the twin's shortfall). While the scans have not told the two apart
+// it reports the twin and a covariance that covers both, without moving a particle; once they
+// have, it claims the pose. With a zero margin the twin never counts.
+TEST(LookAlikeGuard, ReportsARightFilterAsAmbiguousUntilTheScansTellTheTwinApart) {
+  const auto room = std::make_shared<mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  auto run = [&](LookAlikeGuardParams params, int* ambiguous_updates) {
+    MclLocalizer loc(room, std::make_shared<OnePoseInitializer>(kTruth));
+    loc.setLookAlikeGuard(std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(*room), params));
+    MclEstimate e;
+    *ambiguous_updates = 0;
+    for (uint64_t i = 0; i < 3; ++i) {
+      RawlogStep step;
+      step.observations = mrpt::obs::CSensoryFrame::Create();
+      step.observations->insert(scanAtTruth(*room, 20 + i));
+      e = loc.update(step);
+      EXPECT_FALSE(e.look_alike_found) << "the twin fits worse: no particle moves";
+      *ambiguous_updates += e.ambiguous_with.has_value();
+    }
+    return e;
+  };
+  auto undecided = withAmbiguityMargin(kTwinShortfallBound);
+  undecided.rival_test.decisive_log_ratio = 1e9;  // more evidence than three scans can give
+  int ambiguous = 0;
+  const auto waiting = run(undecided, &ambiguous);
+  EXPECT_EQ(ambiguous, 3);
+  ASSERT_TRUE(waiting.ambiguous_with.has_value());
+  EXPECT_LT(distance(*waiting.ambiguous_with, kTwin), 0.3);
+  EXPECT_LT(distance(waiting.mean, kTruth), 0.1) << "the mean stays on the truth";
+  EXPECT_FALSE(isConcentrated(filterSpread(waiting.cov), {}));
+
+  const auto decided = run(withAmbiguityMargin(kTwinShortfallBound), &ambiguous);
+  EXPECT_LT(ambiguous, 3);
+  EXPECT_FALSE(decided.ambiguous_with.has_value()) << "the scans decided against the twin";
+  EXPECT_TRUE(isConcentrated(filterSpread(decided.cov), {}));
+
+  const auto strict = run(withAmbiguityMargin(0.0), &ambiguous);
+  EXPECT_EQ(ambiguous, 0);
+  EXPECT_TRUE(isConcentrated(filterSpread(strict.cov), {}));
 }
 
 }  // namespace

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/math/TPose2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+
+namespace krp {
+
+/// A look-alike place that fits one scan nearly as well as the tracked pose is not yet a reason
+/// to doubt it: the scans that follow usually tell the two apart, and the filter's own sensor
+/// model says by how much. The test adds up, scan after scan, the log-likelihood ratio of the
+/// tracked pose against the rival (a sequential probability ratio test) and decides when either
+/// side leads by a set amount.
+struct RivalTestParams {
+  /// Accumulated log-likelihood ratio that decides [nats of the filter's sensor model]. The
+  /// model treats every used beam as independent, which overstates the evidence of one scan, so
+  /// the bar is well above the textbook log(100) ~ 4.6.
+  double decisive_log_ratio = 20.0;
+  /// Both poses are re-fitted to each scan by trying these offsets on a 3 x 3 x 3 grid around
+  /// them, so that neither side loses for being a few centimetres off (the rival comes from the
+  /// matcher's grid and is moved by odometry alone) [m], [deg].
+  double refine_step_m = 0.05;
+  double refine_step_deg = 1.0;
+};
+
+class RivalTest {
+ public:
+  enum class Verdict { undecided, tracked_wins, rival_wins };
+
+  explicit RivalTest(const mrpt::math::TPose2D& rival, RivalTestParams params = {});
+
+  /// Moves the rival by the robot's odometry increment since the last scan.
+  void move(const mrpt::poses::CPose2D& increment);
+
+  /// Adds one scan's evidence: the log-likelihood at the (re-fitted) tracked pose minus that at
+  /// the (re-fitted) rival, with `map`'s likelihood options.
+  Verdict update(const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CObservation2DRangeScan& scan,
+                 const mrpt::math::TPose2D& tracked);
+
+  const mrpt::math::TPose2D& rival() const { return rival_; }
+  double logRatio() const { return log_ratio_; }  ///< > 0 favours the tracked pose [nats]
+
+ private:
+  /// The best log-likelihood over the refinement grid around `pose`; `pose` is moved there.
+  double refinedLogLikelihood(const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CObservation2DRangeScan& scan,
+                              mrpt::math::TPose2D& pose) const;
+
+  mrpt::math::TPose2D rival_;
+  RivalTestParams params_;
+  double log_ratio_ = 0.0;
+};
+
+}  // namespace krp
