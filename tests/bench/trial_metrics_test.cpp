@@ -6,6 +6,7 @@
 #include "mrpt_krp_plugin/bench/bench_report.h"
 #include "mrpt_krp_plugin/bench/kidnap_report.h"
 #include "mrpt_krp_plugin/bench/trial_metrics.h"
+#include "mrpt_krp_plugin/filter/look_alike_guard.h"
 
 namespace krp {
 namespace {
@@ -150,6 +151,45 @@ TEST(BenchSummary, RelocalizerRatesCountWhereTheBestCameFrom) {
   const auto table = relocalizerTable(s, 0.5);
   EXPECT_NE(table.find("| w | l | seeded | 50 % | 50 % | 25 % | 25 % |"), std::string::npos) << table;
   EXPECT_EQ(table.find("uniform-mcl"), std::string::npos) << table;
+}
+
+// An estimate the guard reports as ambiguous is not confident however tight its particles are:
+// the record reads the widened covariance the filter reports.
+TEST(TrialMetrics, AnAmbiguousEstimateIsNotConfident) {
+  MclEstimate e;
+  e.mean = {1.0, 2.0, 0.0};
+  e.cov.setZero();
+  e.cov(0, 0) = e.cov(1, 1) = 0.01;
+  e.cov(2, 2) = 0.001;
+  const auto tight = makeUpdateRecord(e, e.mean, 0.0);
+  EXPECT_FALSE(tight.ambiguous);
+  EXPECT_TRUE(evaluateTrial({tight}, {}).confident_and_right);
+  e.ambiguous_with = mrpt::math::TPose2D(4.0, 2.0, 0.0);
+  e.cov = covarianceWithLookAlike(e.cov, e.mean, *e.ambiguous_with);
+  const auto ambiguous = makeUpdateRecord(e, e.mean, 0.0);
+  EXPECT_TRUE(ambiguous.ambiguous);
+  const auto o = evaluateTrial({ambiguous}, {});
+  EXPECT_TRUE(o.converged) << "right all the same";
+  EXPECT_FALSE(o.confident_and_right);
+  EXPECT_FALSE(o.confident_but_wrong);
+}
+
+TEST(BenchSummary, ConfidentRatesSplitRightFromWrong) {
+  auto trial = [](bool confident, bool right) {
+    TrialRecord r;
+    r.world = "w", r.lidar = "l", r.method = "m";
+    r.outcome.converged = right;
+    r.outcome.confident_but_wrong = confident && !right;
+    r.outcome.confident_and_right = confident && right;
+    return r;
+  };
+  const auto s = summarize({trial(true, true), trial(true, true), trial(true, false), trial(false, true)}, 0.5);
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_DOUBLE_EQ(s[0].success_rate, 0.75);
+  EXPECT_DOUBLE_EQ(s[0].confident_wrong_rate, 0.25);
+  EXPECT_DOUBLE_EQ(s[0].confident_right_rate, 0.5);
+  const auto table = summaryTable(s);
+  EXPECT_NE(table.find("| w | l | m | 4 | 75 % | 25 % | 50 % |"), std::string::npos) << table;
 }
 
 }  // namespace
