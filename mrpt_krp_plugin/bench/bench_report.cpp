@@ -107,9 +107,10 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, do
       ferr_c.push_back(o.final_error_xy_m);
       fphi_c.push_back(o.final_error_phi_deg);
     }
-    s.success_rate = s.trials ? static_cast<double>(ok) / s.trials : 0.0;
-    s.confident_wrong_rate = s.trials ? static_cast<double>(cbw) / s.trials : 0.0;
-    s.confident_right_rate = s.trials ? static_cast<double>(car) / s.trials : 0.0;
+    const auto share_of_trials = [&](int count) { return s.trials ? static_cast<double>(count) / s.trials : 0.0; };
+    s.success_rate = share_of_trials(ok);
+    s.confident_wrong_rate = share_of_trials(cbw);
+    s.confident_right_rate = share_of_trials(car);
     if (seeded > 0) {
       s.seed_localized_rate = static_cast<double>(seed_localized) / seeded;
       s.seed_best_right_rate = static_cast<double>(seed_right) / seeded;

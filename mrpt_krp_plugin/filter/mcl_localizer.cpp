@@ -112,25 +112,25 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
   const bool fresh = !converged_;
   converged_ = true;
   for (auto& place : rejected_) place = (mrpt::poses::CPose2D(place) + increment).asTPose();
-  std::optional<RivalTest::Verdict> verdict;
   if (rival_) {
     rival_->move(increment);
-    verdict = rival_->update(*map_, scan, mean);
+    const auto verdict = rival_->update(*map_, scan, mean);
+    const auto place = rival_->rival();
     // Re-fitted scan after scan, a rival along a corridor can slide onto the mean: then it is
     // the same place, no longer an alternative, and a fresh search follows.
-    if (guard_->samePlace(rival_->rival(), mean)) rival_.reset();
-  }
-  if (rival_) {
-    if (*verdict == RivalTest::Verdict::undecided) return false;
-    const auto place = rival_->rival();
-    rival_.reset();
-    updates_since_check_ = 0;
-    if (*verdict == RivalTest::Verdict::rival_wins) {
-      moveShareOfParticlesTo(place);
-      return true;
+    if (guard_->samePlace(place, mean)) {
+      rival_.reset();
+    } else {
+      if (verdict == RivalTest::Verdict::undecided) return false;
+      rival_.reset();
+      updates_since_check_ = 0;
+      if (verdict == RivalTest::Verdict::rival_wins) {
+        moveShareOfParticlesTo(place);
+        return true;
+      }
+      rememberRejected(place);
+      return false;
     }
-    rememberRejected(place);
-    return false;
   }
   ++updates_since_check_;
   const bool due = fresh || (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
