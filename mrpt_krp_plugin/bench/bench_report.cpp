@@ -20,6 +20,9 @@
 namespace krp {
 namespace {
 
+/// The tail reported beside a median.
+constexpr double kTailQuantile = 0.9;
+
 std::string ratio(double v, double ref) {
   if (!std::isfinite(v) || !std::isfinite(ref) || ref <= 0) return "-";
   return formatNumber(v / ref, 3) + "x";
@@ -65,12 +68,17 @@ std::string relocalizerTable(const std::vector<MethodSummary>& summaries, double
            "\"localized but wrong\" is the relocalizer's own confident-but-wrong rate: it said localized and its "
            "best was not right; \"best from matcher\" is how often its best hypothesis came from a correlative "
            "search (for the seeded methods: the zone search, which runs when the keypoints give no credible pose, or "
-           "the cross-check of the best answer for look-alike places).\n\n"
-        << "| world | lidar | method | localized | best right | localized but wrong | best from matcher |\n"
-           "|---|---|---|---|---|---|---|\n";
+           "the cross-check of the best answer for look-alike places); \"scan to prior\" is the thread CPU time "
+           "from the first scan to the drawn particles (relocalization and sampling, one core), median and 90th "
+           "percentile over trials.\n\n"
+        << "| world | lidar | method | localized | best right | localized but wrong | best from matcher | scan to prior ms "
+           "(median) | (p90) |\n"
+           "|---|---|---|---|---|---|---|---|---|\n";
+    const auto ms = [](double seconds) { return seconds < 0 ? std::string("-") : formatNumber(1000.0 * seconds, 3); };
     o << "| " << s.world << " | " << s.lidar << " | " << s.method << " | " << formatNumber(100.0 * s.seed_localized_rate)
       << " % | " << formatNumber(100.0 * s.seed_best_right_rate) << " % | " << formatNumber(100.0 * s.seed_localized_wrong_rate)
-      << " % | " << formatNumber(100.0 * s.seed_best_from_matcher_rate) << " % |\n";
+      << " % | " << formatNumber(100.0 * s.seed_best_from_matcher_rate) << " % | " << ms(s.median_seed_cpu_s) << " | "
+      << ms(s.p90_seed_cpu_s) << " |\n";
   }
   if (o.tellp() > 0) o << "\n";
   return o.str();
@@ -81,7 +89,7 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, do
   for (const auto& g : groupByWorldLidarMethod(records)) {
     MethodSummary s{g.front()->world, g.front()->lidar, g.front()->method};
     s.trials = static_cast<int>(g.size());
-    std::vector<double> upd, dist, cpu, init, meanp, pupd, ferr, ferr_c, fphi_c;
+    std::vector<double> upd, dist, cpu, init, meanp, pupd, ferr, ferr_c, fphi_c, seed_cpu;
     int ok = 0, cbw = 0, car = 0, seeded = 0, seed_localized = 0, seed_right = 0, seed_localized_wrong = 0, from_matcher = 0;
     for (const auto* r : g) {
       const auto& o = r->outcome;
@@ -92,6 +100,7 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, do
         seed_right += right ? 1 : 0;
         seed_localized_wrong += (r->seed_localized && !right) ? 1 : 0;
         from_matcher += r->seed_best_from_matcher ? 1 : 0;
+        if (r->seed_cpu_s >= 0) seed_cpu.push_back(r->seed_cpu_s);
       }
       init.push_back(static_cast<double>(o.initial_particles));
       meanp.push_back(o.mean_particles);
@@ -116,6 +125,10 @@ std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, do
       s.seed_best_right_rate = static_cast<double>(seed_right) / seeded;
       s.seed_localized_wrong_rate = static_cast<double>(seed_localized_wrong) / seeded;
       s.seed_best_from_matcher_rate = static_cast<double>(from_matcher) / seeded;
+    }
+    if (!seed_cpu.empty()) {
+      s.median_seed_cpu_s = median(seed_cpu);
+      s.p90_seed_cpu_s = quantile(seed_cpu, kTailQuantile);
     }
     s.median_updates = median(upd);
     s.median_distance_m = median(dist);
@@ -163,7 +176,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
   trials_csv << "world,lidar,method,trial,trial_seed,filter_seed,converged,updates_to_convergence,"
                 "distance_to_convergence_m,cpu_to_convergence_s,initial_particles,mean_particles,"
                 "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,confident_and_right,total_cpu_s,"
-                "seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,kidnap_step,kidnap_tracking_before,"
+                "seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,seed_cpu_s,kidnap_step,kidnap_tracking_before,"
                 "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s\n";
   updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s,"
                  "distance_m\n";
@@ -175,7 +188,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                << o.mean_particles << "," << o.particle_updates_to_convergence << "," << o.final_error_xy_m << ","
                << o.final_error_phi_deg << "," << o.confident_but_wrong << "," << o.confident_and_right << "," << o.total_cpu_s << "," << r.seed_hypotheses
                << "," << r.seed_localized << "," << r.seed_best_error_xy_m << "," << r.seed_best_confidence << ","
-               << r.seed_best_from_matcher << "," << r.kidnap_step << ","
+               << r.seed_best_from_matcher << "," << r.seed_cpu_s << "," << r.kidnap_step << ","
                << r.kidnap.tracking_before << "," << r.kidnap.updates_to_detect << "," << r.kidnap.recovered << ","
                << r.kidnap.updates_to_recover << "," << r.kidnap.cpu_to_recover_s << "\n";
     for (size_t i = 0; i < r.updates.size(); ++i) {
@@ -212,7 +225,9 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                             {"seed_localized_rate", s.seed_localized_rate},
                             {"seed_best_right_rate", s.seed_best_right_rate},
                             {"seed_localized_wrong_rate", s.seed_localized_wrong_rate},
-                            {"seed_best_from_matcher_rate", s.seed_best_from_matcher_rate}});
+                            {"seed_best_from_matcher_rate", s.seed_best_from_matcher_rate},
+                            {"median_scan_to_prior_cpu_s", s.median_seed_cpu_s},
+                            {"p90_scan_to_prior_cpu_s", s.p90_seed_cpu_s}});
   // NaN medians (no converged trial) become null in JSON.
   writeFileAtomically((fs::path(out_dir) / "summary.json").string(), j.dump(2) + "\n");
 

@@ -30,6 +30,8 @@ struct MethodSummary {
   double seed_best_right_rate = -1.0;   ///< its best hypothesis was within max_error_xy_m of the truth / trials
   double seed_localized_wrong_rate = -1.0;  ///< it called itself localized and its best was not right / trials
   double seed_best_from_matcher_rate = -1.0;  ///< its best came from a correlative search / trials
+  double median_seed_cpu_s = -1.0;  ///< thread CPU from the scan to the drawn prior, median over trials [s]
+  double p90_seed_cpu_s = -1.0;     ///< its 90th percentile [s]
 };
 
 std::vector<MethodSummary> summarize(const std::vector<TrialRecord>& records, double right_within_m = 0.5);

@@ -137,6 +137,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
           const auto& ranking = seeded->lastSeeding()->ranking;
           rec.seed_hypotheses = static_cast<int>(ranking.hypotheses.size());
           rec.seed_localized = ranking.localized;
+          rec.seed_cpu_s = seeded->lastSeeding()->cpu_s;
           if (!ranking.hypotheses.empty()) {
             const auto& best = ranking.hypotheses.front().pose;
             rec.seed_best_confidence = ranking.hypotheses.front().confidence;

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
 
-#include <time.h>
-
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -11,14 +9,9 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/common/thread_cpu_time.h"
 
 namespace krp {
-
-double threadCpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
 
 namespace {
 

@@ -109,7 +109,4 @@ class MclLocalizer {
   uint64_t guard_draws_ = 0;
 };
 
-/// Thread CPU time [s].
-double threadCpuSeconds();
-
 }  // namespace krp

@@ -6,6 +6,7 @@
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/common/thread_cpu_time.h"
 #include "mrpt_krp_plugin/map/grid_image.h"
 
 namespace krp {
@@ -35,6 +36,7 @@ SeededInitializer::SeededInitializer(HypothesisSource source, SeededInitParams p
 void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
                                    mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf_options,
                                    const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) {
+  const double start_s = threadCpuSeconds();
   SeedingRecord rec;
   const auto scan = first.getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
   if (!scan) throw InputError("first observation", "holds no 2D range scan to relocalize from");
@@ -46,6 +48,7 @@ void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
     uniform.initialize(pf, pf_options, map, first);
     rec.particles = rec.uniform_particles = pf.size();
     rec.fell_back_to_uniform = true;
+    rec.cpu_s = threadCpuSeconds() - start_s;
     last_ = rec;
     return;
   }
@@ -87,6 +90,7 @@ void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
     p.log_w = 0.0;
   }
   rec.particles = total;
+  rec.cpu_s = threadCpuSeconds() - start_s;
   last_ = rec;
 }
 

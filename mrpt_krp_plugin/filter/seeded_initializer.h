@@ -37,6 +37,8 @@ struct SeedingRecord {
   Ranking ranking;
   std::size_t particles = 0, uniform_particles = 0;
   bool fell_back_to_uniform = false;
+  /// Thread CPU time from the scan to the drawn prior: relocalization and sampling [s].
+  double cpu_s = 0.0;
 };
 
 /// `seeded`: the relocalizer's hypotheses become a Gaussian mixture (particles split by

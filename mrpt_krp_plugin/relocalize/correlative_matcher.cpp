@@ -4,8 +4,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <functional>
 #include <stdexcept>
 
 #include "mrpt_krp_plugin/submap/scan_beams.h"
@@ -45,30 +45,46 @@ CorrelativeMatcher::CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& ma
   cv::Mat score;
   cv::multiply(dist, dist, score, -0.5 / (params_.hit_sigma_m * params_.hit_sigma_m));
   cv::exp(score, score);
+  if (!(params_.margin_m >= 0.0)) throw std::invalid_argument("CorrelativeMatcherParams::margin_m must be >= 0");
+  margin_ = static_cast<int>(std::ceil(params_.margin_m / res));
+  cv::copyMakeBorder(score, score, margin_, margin_, margin_, margin_, cv::BORDER_CONSTANT, cv::Scalar(0));
   levels_.push_back(score);
+  const int rows = score.rows, cols = score.cols;
   for (int lvl = 1; lvl <= params_.depth; ++lvl) {
     // Window doubling: the max over [x, x + 2s) is the max of two windows of s.
     const int s = 1 << (lvl - 1);
     const cv::Mat& prev = levels_.back();
     cv::Mat next = prev.clone();
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
+    for (int y = 0; y < rows; ++y)
+      for (int x = 0; x < cols; ++x) {
         float m = prev.at<float>(y, x);
-        if (x + s < w) m = std::max(m, prev.at<float>(y, x + s));
-        if (y + s < h) m = std::max(m, prev.at<float>(y + s, x));
-        if (x + s < w && y + s < h) m = std::max(m, prev.at<float>(y + s, x + s));
+        if (x + s < cols) m = std::max(m, prev.at<float>(y, x + s));
+        if (y + s < rows) m = std::max(m, prev.at<float>(y + s, x));
+        if (x + s < cols && y + s < rows) m = std::max(m, prev.at<float>(y + s, x + s));
         next.at<float>(y, x) = m;
       }
     levels_.push_back(next);
   }
+  for (const auto& level : levels_) CV_Assert(level.isContinuous());  // Rotation::linear indexes them
 }
 
 double CorrelativeMatcher::bound(const Rotation& r, int cx, int cy, int level) const {
   ++nodes_scored_;
   const cv::Mat& g = levels_[level];
+  const int gx = cx + margin_, gy = cy + margin_;  // the node's cell in the level grids
   double sum = 0;
+  if (gx + r.min_x >= 0 && gy + r.min_y >= 0 && gx + r.max_x < g.cols && gy + r.max_y < g.rows) {
+    const float* robot_cell = g.ptr<float>(gy) + gx;
+    // Four running sums: one would make every addition wait for the previous one.
+    double part[4] = {0, 0, 0, 0};
+    const size_t n = r.linear.size(), whole = n - n % 4;
+    for (size_t i = 0; i < whole; i += 4)
+      for (size_t j = 0; j < 4; ++j) part[j] += robot_cell[r.linear[i + j]];
+    for (size_t i = whole; i < n; ++i) part[0] += robot_cell[r.linear[i]];
+    return ((part[0] + part[1]) + (part[2] + part[3])) / static_cast<double>(n);
+  }
   for (const auto& o : r.offsets) {
-    const int x = cx + o.x, y = cy + o.y;
+    const int x = gx + o.x, y = gy + o.y;
     // A node's window may start left of or below the grid: the part inside still bounds it.
     const int span = (1 << level) - 1;
     if (x + span < 0 || y + span < 0 || x >= g.cols || y >= g.rows) continue;
@@ -106,11 +122,20 @@ std::vector<mrpt::math::TPoint2D> CorrelativeMatcher::returns(const mrpt::obs::C
 }
 
 CorrelativeMatcher::Rotation CorrelativeMatcher::rotate(const std::vector<mrpt::math::TPoint2D>& points, double phi) const {
-  Rotation r{phi, {}};
+  Rotation r{phi, {}, {}};
   const double res = params_.resolution_m, c = std::cos(phi), s = std::sin(phi);
-  for (const auto& p : points)
-    r.offsets.emplace_back(static_cast<int>(std::floor(0.5 + (c * p.x - s * p.y) / res)),
-                           static_cast<int>(std::floor(0.5 + (s * p.x + c * p.y) / res)));
+  // Every level grid has the score grid's size and is continuous, so one row stride serves all.
+  const int stride = levels_.front().cols;
+  for (const auto& p : points) {
+    const cv::Point o(static_cast<int>(std::floor(0.5 + (c * p.x - s * p.y) / res)),
+                      static_cast<int>(std::floor(0.5 + (s * p.x + c * p.y) / res)));
+    r.offsets.push_back(o);
+    r.linear.push_back(o.y * stride + o.x);
+    r.min_x = std::min(r.min_x, o.x);
+    r.max_x = std::max(r.max_x, o.x);
+    r.min_y = std::min(r.min_y, o.y);
+    r.max_y = std::max(r.max_y, o.y);
+  }
   return r;
 }
 
@@ -167,7 +192,7 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
           if (inRegion(cx, cy, top)) roots.push_back({cx, cy, top, bound(rot, cx, cy, top)});
       std::sort(roots.begin(), roots.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
       // Depth-first, best child first; a node whose bound cannot beat the best is pruned.
-      std::function<void(const Node&)> visit = [&](const Node& n) {
+      const auto visit = [&](const auto& self, const Node& n) -> void {
         if (n.bound <= best.score) return;
         if (n.level == 0) {
           if (n.cx >= free_.cols || n.cy >= free_.rows || !robotCellFree(n.cx, n.cy) || !inRegion(n.cx, n.cy, 0) ||
@@ -178,17 +203,18 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
           return;
         }
         const int half = 1 << (n.level - 1);
-        std::vector<Node> children;
+        std::array<Node, 4> children;
+        size_t count = 0;
         for (int dy : {0, half})
           for (int dx : {0, half})
             if (n.cx + dx < free_.cols && n.cy + dy < free_.rows && inRegion(n.cx + dx, n.cy + dy, n.level - 1))
-              children.push_back({n.cx + dx, n.cy + dy, n.level - 1, bound(rot, n.cx + dx, n.cy + dy, n.level - 1)});
-        std::sort(children.begin(), children.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
-        for (const auto& c : children) visit(c);
+              children[count++] = {n.cx + dx, n.cy + dy, n.level - 1, bound(rot, n.cx + dx, n.cy + dy, n.level - 1)};
+        std::sort(children.begin(), children.begin() + count, [](const Node& a, const Node& b) { return a.bound > b.bound; });
+        for (size_t i = 0; i < count; ++i) self(self, children[i]);
       };
       for (const auto& r : roots) {
         if (r.bound <= best.score) break;
-        visit(r);
+        visit(visit, r);
       }
     }
     if (!found) break;

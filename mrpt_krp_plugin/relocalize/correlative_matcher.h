@@ -24,6 +24,10 @@ struct CorrelativeMatcherParams {
   double exclusion_m = 1.0;        ///< [m]
   double min_occupancy = 0.65;     ///< map cells above this are obstacles [0..1]
   double min_freeness = 0.6;       ///< the robot's own cell must be at least this free [0..1]
+  /// The score grids extend this far beyond the map on every side (scoring nothing there), so
+  /// that a scan whose returns reach no farther outside is bounded without edge checks. Costs
+  /// memory: (width + 2 margin) x (height + 2 margin) x (depth + 1) floats [m].
+  double margin_m = 15.0;
 };
 
 /// What one match() looks for; every field left empty keeps the parameters' choice.
@@ -75,6 +79,11 @@ class CorrelativeMatcher {
   struct Rotation {
     double phi;
     std::vector<cv::Point> offsets;  ///< each return's cell offset from the robot's cell
+    /// The same offsets as indices into a row-major level grid, and their bounding box: a node
+    /// whose returns all land inside the grid is bounded by a plain gather, without per-return
+    /// edge checks (the bound is where the search spends its time).
+    std::vector<int> linear;
+    int min_x = 0, max_x = 0, min_y = 0, max_y = 0;
   };
   /// The scan's returns in the robot frame, evenly decimated to max_points.
   std::vector<mrpt::math::TPoint2D> returns(const mrpt::obs::CObservation2DRangeScan& scan) const;
@@ -83,7 +92,10 @@ class CorrelativeMatcher {
   bool robotCellFree(int cx, int cy) const { return free_.at<uint8_t>(cy, cx) != 0; }
 
   CorrelativeMatcherParams params_;
-  std::vector<cv::Mat> levels_;  ///< levels_[h](y, x): max of the score grid over [x, x + 2^h) x [y, y + 2^h)
+  /// levels_[h](y, x): max of the score grid over [x, x + 2^h) x [y, y + 2^h), in cells of the
+  /// search grid shifted by margin_ (map cell (cx, cy) is levels_[h](cy + margin_, cx + margin_)).
+  std::vector<cv::Mat> levels_;
+  int margin_ = 0;               ///< margin_m in cells
   cv::Mat free_;                 ///< CV_8U, robot may stand here
   double x_min_ = 0, y_min_ = 0;
   mutable long long nodes_scored_ = 0;

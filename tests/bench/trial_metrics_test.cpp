@@ -128,7 +128,7 @@ TEST(BenchSummary, KidnapRatesAreOverTrialsThatWereTracking) {
 
 // The first-scan relocalization rates count only methods with a relocalizer, over their trials.
 TEST(BenchSummary, RelocalizerRatesCountWhereTheBestCameFrom) {
-  auto trial = [](const char* method, int hypotheses, bool localized, double error_m, bool from_matcher) {
+  auto trial = [](const char* method, int hypotheses, bool localized, double error_m, bool from_matcher, double cpu_s) {
     TrialRecord r;
     r.world = "w", r.lidar = "l", r.method = method;
     r.seed_hypotheses = hypotheses;
@@ -136,11 +136,13 @@ TEST(BenchSummary, RelocalizerRatesCountWhereTheBestCameFrom) {
     r.seed_best_error_xy_m = error_m;
     r.seed_best_confidence = hypotheses > 0 ? 0.9 : -1.0;
     r.seed_best_from_matcher = from_matcher;
+    r.seed_cpu_s = cpu_s;
     return r;
   };
-  const std::vector<TrialRecord> records = {trial("seeded", 2, true, 0.1, true), trial("seeded", 1, true, 3.0, false),
-                                            trial("seeded", 1, false, 0.2, false), trial("seeded", 0, false, -1, false),
-                                            trial("uniform-mcl", -1, false, -1, false)};
+  const std::vector<TrialRecord> records = {
+      trial("seeded", 2, true, 0.1, true, 0.040), trial("seeded", 1, true, 3.0, false, 0.010),
+      trial("seeded", 1, false, 0.2, false, 0.030), trial("seeded", 0, false, -1, false, 0.020),
+      trial("uniform-mcl", -1, false, -1, false, -1.0)};
   const auto s = summarize(records, 0.5);
   ASSERT_EQ(s.size(), 2u);
   EXPECT_DOUBLE_EQ(s[0].seed_localized_rate, 0.5);
@@ -148,8 +150,11 @@ TEST(BenchSummary, RelocalizerRatesCountWhereTheBestCameFrom) {
   EXPECT_DOUBLE_EQ(s[0].seed_localized_wrong_rate, 0.25);
   EXPECT_DOUBLE_EQ(s[0].seed_best_from_matcher_rate, 0.25);
   EXPECT_LT(s[1].seed_best_from_matcher_rate, 0.0) << "no relocalizer, no rate";
+  EXPECT_DOUBLE_EQ(s[0].median_seed_cpu_s, 0.025);
+  EXPECT_DOUBLE_EQ(s[0].p90_seed_cpu_s, 0.037) << "linear between the 3rd and 4th of 4";
+  EXPECT_LT(s[1].median_seed_cpu_s, 0.0) << "no relocalizer, no time";
   const auto table = relocalizerTable(s, 0.5);
-  EXPECT_NE(table.find("| w | l | seeded | 50 % | 50 % | 25 % | 25 % |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| w | l | seeded | 50 % | 50 % | 25 % | 25 % | 25 | 37 |"), std::string::npos) << table;
   EXPECT_EQ(table.find("uniform-mcl"), std::string::npos) << table;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/common/thread_cpu_time.h"
 #include "mrpt_krp_plugin/filter/seeded_initializer.h"
 #include "support/test_maps.h"
 
@@ -80,6 +81,29 @@ TEST(SeededInitializer, NoUniformShareWhenAskedAndUniformFallbackWithoutHypothes
   EXPECT_TRUE(fallback.lastSeeding()->fell_back_to_uniform);
   EXPECT_EQ(pf.size(), 3000u);
   EXPECT_LT(near(pf, 5.5, 2.0, 1.0), 300u);
+}
+
+// The recorded time is "scan to prior" as the bench reports it: it includes the relocalization,
+// here a source that spins for a known CPU time, whether it answers or falls back to uniform.
+TEST(SeededInitializer, RecordsTheCpuTimeFromScanToPrior) {
+  const auto room = test::asymmetricRoom();
+  constexpr double kSourceCpuS = 0.03;
+  for (const bool answers : {true, false}) {
+    SeededInitializer init([&](const auto&) {
+      const double start = threadCpuSeconds();
+      volatile double sink = 0;
+      while (threadCpuSeconds() - start < kSourceCpuS) sink = sink + 1.0;
+      Ranking r;
+      if (answers) r.hypotheses = {hypothesis(5.5, 2.0, 1.0)};
+      return r;
+    });
+    mrpt::slam::CMonteCarloLocalization2D pf;
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+    init.initialize(pf, o, room, frameWithScan());
+    EXPECT_EQ(init.lastSeeding()->fell_back_to_uniform, !answers);
+    EXPECT_GE(init.lastSeeding()->cpu_s, kSourceCpuS) << "answers: " << answers;
+    EXPECT_LT(init.lastSeeding()->cpu_s, 10 * kSourceCpuS) << "a time, not a timestamp";
+  }
 }
 
 TEST(SeededInitializer, RefusesBadParametersAndFramesWithoutScans) {

@@ -77,6 +77,31 @@ TEST(CorrelativeMatcher, ASymmetricRoomGivesTwoEqualSolutions) {
   EXPECT_NEAR(twin.pose.y, 7.0 - 2.5, 0.2);
 }
 
+// The margin around the score grids only lets the bound skip its edge checks: without it (every
+// node near the map's edge takes the checked path) the search finds the same places and scores.
+TEST(CorrelativeMatcher, TheGridMarginChangesTheCostNotTheAnswer) {
+  const auto room = test::asymmetricRoom();
+  const auto scan = scanAt(room, mrpt::poses::CPose2D(2.0, 4.5, -2.2));
+  CorrelativeMatcherParams edge_checked;
+  edge_checked.margin_m = 0.0;
+  const CorrelativeMatcher with_margin(room), without(room, edge_checked);
+  const auto a = with_margin.match(*scan), b = without.match(*scan);
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_NEAR(a[i].score, b[i].score, 1e-9) << i;
+    EXPECT_DOUBLE_EQ(a[i].pose.x, b[i].pose.x) << i;
+    EXPECT_DOUBLE_EQ(a[i].pose.y, b[i].pose.y) << i;
+    EXPECT_DOUBLE_EQ(a[i].pose.phi, b[i].pose.phi) << i;
+  }
+  // A pose off the map scores its returns that land on it, in both.
+  const mrpt::math::TPose2D off_map{-1.0, 3.0, 0.0};
+  EXPECT_NEAR(with_margin.scoreAt(*scan, off_map), without.scoreAt(*scan, off_map), 1e-9);
+  CorrelativeMatcherParams negative;
+  negative.margin_m = -1.0;
+  EXPECT_THROW(CorrelativeMatcher(room, negative), std::invalid_argument);
+}
+
 // A zone region decides between the twins: the search stays inside it and costs less.
 TEST(CorrelativeMatcher, ARegionKeepsTheSearchInsideIt) {
   const auto map = bareRectangle();
