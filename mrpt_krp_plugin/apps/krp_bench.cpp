@@ -46,6 +46,10 @@ static int run(int argc, char** argv) {
                 {"models-root", "DIR", "seeded methods: models of world W in DIR/W (krp-train-map's output)", "models"},
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"seeded-max-particles", "N", "seeded: particle cap", "5000"},
+                {"seeded-particles-per-hypothesis", "N", "seeded: particles around each hypothesis, before the "
+                 "confidence split", std::to_string(krp::SeededInitParams{}.particles_per_hypothesis)},
+                {"seeded-min-particles", "N", "seeded: fewest particles in all, uniform share included",
+                 std::to_string(krp::SeededInitParams{}.min_particles)},
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"search-zones", "N", "seeded: when the keypoints give no credible pose, the correlative matcher "
                  "searches this many of the classifier's most likely zones (0 = no zone search)", "1"},
@@ -80,6 +84,10 @@ static int run(int argc, char** argv) {
   cfg.method_settings.models_root = args.get("models-root");
   cfg.method_settings.seeded.uniform_fraction = args.number("seeded-uniform-fraction");
   cfg.method_settings.seeded.max_particles = static_cast<size_t>(args.integer("seeded-max-particles"));
+  for (const char* flag : {"seeded-max-particles", "seeded-particles-per-hypothesis", "seeded-min-particles"})
+    if (args.integer(flag) < 1) throw krp::InputError(std::string("--") + flag, "must be 1 or more");
+  cfg.method_settings.seeded.particles_per_hypothesis = static_cast<size_t>(args.integer("seeded-particles-per-hypothesis"));
+  cfg.method_settings.seeded.min_particles = static_cast<size_t>(args.integer("seeded-min-particles"));
   cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integer("top-zones"));
   const auto search_zones = args.integer("search-zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
