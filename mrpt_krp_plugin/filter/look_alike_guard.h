@@ -58,8 +58,8 @@ struct LookAlike {
 
 class LookAlikeGuard {
  public:
-  /// Throws std::invalid_argument for a share outside (0, 1], margins outside [0, 1] or an
-  /// ambiguity margin below the score margin.
+  /// Throws std::invalid_argument for a share outside (0, 1], margins outside [0, 1], an
+  /// ambiguity margin below the score margin, or rival-test settings validateRivalTestParams refuses.
   LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher, LookAlikeGuardParams params = {});
 
   /// The best place at least the matcher's exclusion distance from `pose` (and from each of

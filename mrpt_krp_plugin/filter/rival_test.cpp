@@ -9,10 +9,14 @@
 
 namespace krp {
 
-RivalTest::RivalTest(const mrpt::math::TPose2D& rival, RivalTestParams params) : rival_(rival), params_(params) {
-  if (!(params_.decisive_log_ratio > 0.0)) throw std::invalid_argument("RivalTest: decisive_log_ratio must be > 0");
-  if (params_.refine_step_m < 0.0 || params_.refine_step_deg < 0.0)
+void validateRivalTestParams(const RivalTestParams& params) {
+  if (!(params.decisive_log_ratio > 0.0)) throw std::invalid_argument("RivalTest: decisive_log_ratio must be > 0");
+  if (params.refine_step_m < 0.0 || params.refine_step_deg < 0.0)
     throw std::invalid_argument("RivalTest: refinement steps must be >= 0");
+}
+
+RivalTest::RivalTest(const mrpt::math::TPose2D& rival, RivalTestParams params) : rival_(rival), params_(params) {
+  validateRivalTestParams(params_);
 }
 
 void RivalTest::move(const mrpt::poses::CPose2D& increment) {

@@ -25,10 +25,15 @@ struct RivalTestParams {
   double refine_step_deg = 1.0;
 };
 
+/// Throws std::invalid_argument for a decisive ratio that is not positive or a negative
+/// refinement step: what RivalTest refuses, for owners that check their settings up front.
+void validateRivalTestParams(const RivalTestParams& params);
+
 class RivalTest {
  public:
   enum class Verdict { undecided, tracked_wins, rival_wins };
 
+  /// Throws as validateRivalTestParams does.
   explicit RivalTest(const mrpt::math::TPose2D& rival, RivalTestParams params = {});
 
   /// Moves the rival by the robot's odometry increment since the last scan.
