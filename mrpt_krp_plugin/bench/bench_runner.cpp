@@ -55,6 +55,8 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
   struct Job {
     World world;
     std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map;
+    /// The filters' map: its likelihood field computed once, at loading, as amcl does.
+    SensorModelMap filter_map;
     LidarProfile lidar;
     size_t world_index, lidar_index;
     MethodResources resources;
@@ -63,6 +65,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
   for (size_t wi = 0; wi < cfg.world_files.size(); ++wi) {
     const World w = readWorld(cfg.world_files[wi]);
     const auto map = loadOccupancyMap(w.map_path).grid;
+    const auto filter_map = prepareSensorModelMap(*map, cfg.mcl.sensor);
     const auto lidars = cfg.lidars.empty() ? std::vector<std::string>{w.default_lidar_profile} : cfg.lidars;
     std::shared_ptr<const MatcherRelocalizer> matcher;
     if (need_matcher) matcher = std::make_shared<MatcherRelocalizer>(*map, cfg.method_settings.matcher);
@@ -85,7 +88,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         log << "krp-bench: " << w.name << " / " << lidars[li] << ": models " << models << " (lidar "
             << r.manifest().lidar_name << ")\n";
       }
-      jobs.push_back({w, map, w.lidar(lidars[li]), wi, li, res});
+      jobs.push_back({w, map, filter_map, w.lidar(lidars[li]), wi, li, res});
     }
   }
   log << "krp-bench: base seed " << cfg.seed << "; " << jobs.size() << " world/lidar pair(s) x " << cfg.methods.size()
@@ -117,7 +120,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         MethodSettings ms = cfg.method_settings;
         ms.seeded.seed = filter_seed;
         const auto init = makeInitializer(method, ms, job.resources);
-        MclLocalizer loc(job.map, init, mp);
+        MclLocalizer loc(job.filter_map, init, mp);
         if (methodUsesLookAlikeGuard(method)) loc.setLookAlikeGuard(job.resources.guard);
         TrialRecord rec;
         rec.world = job.world.name;

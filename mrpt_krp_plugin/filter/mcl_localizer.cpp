@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <tuple>
 
 #include <mrpt/math/wrap2pi.h>
@@ -24,24 +25,16 @@ mrpt::poses::CPose2D odometryIncrement(const mrpt::obs::CActionCollection& actio
 
 }  // namespace
 
-void useSensorModel(mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor) {
-  auto& lo = map.likelihoodOptions;
-  lo.likelihoodMethod = mrpt::maps::COccupancyGridMap2D::lmLikelihoodField_Thrun;
-  lo.LF_decimation = static_cast<uint32_t>(sensor.decimation);
-  lo.LF_stdHit = static_cast<float>(sensor.std_hit_m);
-  lo.LF_maxCorrsDistance = static_cast<float>(sensor.max_corr_distance_m);
-  lo.LF_zHit = static_cast<float>(sensor.z_hit);
-  lo.LF_zRandom = static_cast<float>(sensor.z_random);
-  lo.LF_useSquareDist = false;
-  lo.enableLikelihoodCache = true;
-}
-
 MclLocalizer::MclLocalizer(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
                            std::shared_ptr<ParticleInitializer> init, MclParams params)
-    // The filter needs its own copy: MRPT caches the likelihood field inside the map.
-    : map_(std::make_shared<mrpt::maps::COccupancyGridMap2D>(*map)), init_(std::move(init)), params_(params),
+    : MclLocalizer(prepareSensorModelMap(*map, params.sensor), std::move(init), params) {}
+
+MclLocalizer::MclLocalizer(const SensorModelMap& map, std::shared_ptr<ParticleInitializer> init, MclParams params)
+    // The filter needs its own copy: MRPT keeps the likelihood cache inside the map (copied filled).
+    : map_(std::make_shared<mrpt::maps::COccupancyGridMap2D>(*map.grid)), init_(std::move(init)), params_(params),
       kidnap_(params.kidnap) {
-  useSensorModel(*map_, params_.sensor);
+  if (map.sensor != params_.sensor)
+    throw std::invalid_argument("MclLocalizer: the map was prepared for another sensor model than the filter's");
   pf_.options.metricMap = map_;
   auto& o = filter_.m_options;
   o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;

@@ -12,22 +12,11 @@
 #include "mrpt_krp_plugin/filter/kidnap_detector.h"
 #include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/filter/particle_initializer.h"
+#include "mrpt_krp_plugin/filter/sensor_model.h"
 #include "mrpt_krp_plugin/relocalize/scan_fit.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 
 namespace krp {
-
-/// The scan likelihood the filter weighs particles with (MRPT's likelihood field).
-struct SensorModelParams {
-  int decimation = 4;            ///< use every n-th beam
-  double std_hit_m = 0.20;       ///< likelihood-field sigma [m]
-  double max_corr_distance_m = 0.5;  ///< distances beyond this count as this [m]
-  double z_hit = 0.95;           ///< weight of the hit model [0..1]
-  double z_random = 0.05;        ///< weight of random returns [0..1]
-};
-
-/// Sets `map`'s likelihood options to this sensor model (MRPT keeps them, and a cache, in the map).
-void useSensorModel(mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor);
 
 struct MclParams {
   SensorModelParams sensor;
@@ -63,8 +52,13 @@ struct MclEstimate {
 /// KLD path resamples inside MRPT's adaptive proposal and is left as it is.
 class MclLocalizer {
  public:
+  /// Prepares its own copy of `map` for `params.sensor` (prepareSensorModelMap: the likelihood
+  /// field of the whole map is computed here, not in the first updates).
   MclLocalizer(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map, std::shared_ptr<ParticleInitializer> init,
                MclParams params = {});
+  /// Starts from a map prepared once for many filters; `map.sensor` must be `params.sensor`
+  /// (std::invalid_argument otherwise: the cache would hold another model's likelihoods).
+  MclLocalizer(const SensorModelMap& map, std::shared_ptr<ParticleInitializer> init, MclParams params = {});
 
   /// First call initializes from the step's observation, then updates with it; so does the
   /// call after a detected kidnap.

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "mrpt_krp_plugin/common/random.h"
-#include "mrpt_krp_plugin/filter/mcl_localizer.h"
+#include "mrpt_krp_plugin/filter/sensor_model.h"
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
 #include "support/test_maps.h"
