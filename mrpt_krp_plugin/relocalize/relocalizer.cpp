@@ -11,6 +11,7 @@
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/relocalize/matcher_relocalizer.h"
+#include "mrpt_krp_plugin/relocalize/training_map_check.h"
 #include "mrpt_krp_plugin/submap/occupancy_image.h"
 #include "mrpt_krp_plugin/submap/sdt_image.h"
 #include "mrpt_krp_plugin/submap/submap_builder.h"
@@ -22,25 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-void requireLandmarksInsideMap(const ModelManifest& m, const mrpt::maps::COccupancyGridMap2D& map) {
-  for (size_t z = 0; z < m.landmarks.size(); ++z)
-    for (const auto& p : m.landmarks[z])
-      if (p.x < map.getXMin() || p.x > map.getXMax() || p.y < map.getYMin() || p.y > map.getYMax())
-        throw InputError(m.folder + "/manifest.json",
-                         "landmark of zone '" + m.zones[z] + "' lies outside the map: the models were trained on "
-                         "another map (world '" + m.world + "')");
-}
-
-void requireTrainingMapResolution(const ModelManifest& m, const mrpt::maps::COccupancyGridMap2D& map,
-                                  double tolerance_m) {
-  if (m.map_resolution_m > 0 && std::abs(map.getResolution() - m.map_resolution_m) > tolerance_m) {
-    std::ostringstream s;
-    s << "the models were trained on a map of " << m.map_resolution_m << " m cells (world '" << m.world
-      << "'); this map has " << map.getResolution() << " m cells";
-    throw InputError(m.folder + "/manifest.json", s.str());
-  }
-}
 
 /// The `count` zone indices with the highest probability.
 std::vector<int> topZones(const std::vector<float>& probs, int count) {
@@ -68,8 +50,7 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
       classifier_(manifest_, params.onnx),
       detector_(manifest_, params.onnx),
       verifier_(map, params.verifier) {
-  requireTrainingMapResolution(manifest_, map, params.map_resolution_tolerance_m);
-  requireLandmarksInsideMap(manifest_, map);
+  requireTrainingMap(manifest_, map, params.training_map);
   if (params_.cross_check.enabled) matcher_.emplace(map, params_.matcher);
   if (given_zones)
     enableZoneSearch(map, *given_zones);

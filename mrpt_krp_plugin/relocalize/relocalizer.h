@@ -15,6 +15,7 @@
 #include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
 #include "mrpt_krp_plugin/relocalize/keypoint_hypotheses.h"
 #include "mrpt_krp_plugin/relocalize/pose_verifier.h"
+#include "mrpt_krp_plugin/relocalize/training_map_check.h"
 #include "mrpt_krp_plugin/zones/zone.h"
 
 namespace krp {
@@ -80,8 +81,7 @@ struct RelocalizerParams {
   double lidar_fov_tolerance_deg = 10.0;
   /// The same for the maximum range, as a fraction of the manifest's.
   double lidar_range_tolerance = 0.25;
-  /// The map's cell size may differ from the one trained on by this much [m] (float rounding).
-  double map_resolution_tolerance_m = 1e-4;
+  TrainingMapCheckParams training_map;  ///< when a map is refused as not the one trained on
 };
 
 /// Wall-clock time of each stage of one relocalization [ms].

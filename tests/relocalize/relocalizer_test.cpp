@@ -53,6 +53,14 @@ TEST(Relocalizer, RefusesAMapOfAnotherCellSize) {
   EXPECT_NE(message.find("trained on a map of 0.05"), std::string::npos) << message;
 }
 
+// Same cell size, another building: the models' landmarks are not on its walls.
+TEST(Relocalizer, RefusesAnotherWorldsMap) {
+  const auto warehouse = loadOccupancyMap(
+      readWorld(std::string(KRP_SOURCE_DIR) + "/sim_worlds/warehouse/warehouse.world.yaml").map_path);
+  const auto message = inputErrorMessage([&] { Relocalizer(kModels, *warehouse.grid); });
+  EXPECT_NE(message.find("trained on another map (world 'office_two_zone')"), std::string::npos) << message;
+}
+
 TEST(Relocalizer, RefusesZonesThatAreNotTheModels) {
   const auto world = readWorld(kWorld);
   const auto map = loadOccupancyMap(world.map_path);
