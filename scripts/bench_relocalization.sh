@@ -5,8 +5,7 @@
 #                    cross-check, filter with the look-alike guard), seeded-no-uniform,
 #                    seeded-no-cross-check, seeded-no-guard, seeded-keypoints-only (the models
 #                    alone), global-matcher (~6 min on 2 idle cores);
-#   warehouse:       30 trials, the same without uniform-mcl, whose 92,537 particles cost ~3.5 s an
-#                    update there (reports/baseline/warehouse has it over 40 updates) (~2 min).
+#   warehouse:       30 trials, the same methods (uniform-mcl: 92,537 particles) (~5 min).
 # Usage: scripts/bench_relocalization.sh [office|warehouse|all] [extra krp-bench flags]
 # (build first with scripts/build.sh)
 set -euo pipefail
@@ -24,6 +23,6 @@ if [[ "$which" == all || "$which" == office ]]; then
 fi
 if [[ "$which" == all || "$which" == warehouse ]]; then
   "$bench" --worlds warehouse "${common[@]}" --trials 30 \
-    --methods amcl-kld,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
+    --methods uniform-mcl,amcl-kld,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
     --out reports/relocalization/warehouse "$@"
 fi
