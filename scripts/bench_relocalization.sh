@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Regenerates the committed relocalization reports (issue 4), every method on the same simulated
 # kidnaps with the same seeds, 360 deg 12 m lidar, 10 updates:
-#   office_two_zone: 100 trials, uniform-mcl, amcl-kld, seeded (shipped models + zone search +
+#   office_two_zone: 100 trials, uniform-mcl, amcl-kld, amcl-kld-50k (does AMCL reach the seeded
+#                    method's success with ten times the particles?), seeded (shipped models + zone search +
 #                    cross-check, filter with the look-alike guard), seeded-no-uniform,
 #                    seeded-no-cross-check, seeded-no-guard, seeded-keypoints-only (the models
 #                    alone), global-matcher (~6 min on 2 idle cores);
-#   warehouse:       30 trials, the same methods (uniform-mcl: 92,537 particles) (~5 min).
+#   warehouse:       30 trials, the same methods but amcl-kld-50k (reports/baseline/warehouse has
+#                    it over 40 updates); uniform-mcl starts with 92,537 particles (~5 min).
 # Usage: scripts/bench_relocalization.sh [office|warehouse|all] [extra krp-bench flags]
 # (build first with scripts/build.sh)
 set -euo pipefail
@@ -18,7 +20,7 @@ bench=./build/mrpt_krp_plugin/apps/krp-bench
 common=(--lidars omni_12m --models-root models --steps 10 --seed 1)
 if [[ "$which" == all || "$which" == office ]]; then
   "$bench" --worlds office_two_zone "${common[@]}" --trials 100 \
-    --methods uniform-mcl,amcl-kld,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
+    --methods uniform-mcl,amcl-kld,amcl-kld-50k,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
     --out reports/relocalization/office_two_zone "$@"
 fi
 if [[ "$which" == all || "$which" == warehouse ]]; then
