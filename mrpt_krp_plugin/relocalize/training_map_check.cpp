@@ -22,6 +22,10 @@ bool occupiedWithin(const cv::Mat& mask, const cv::Point& centre, int radius_px)
   return false;
 }
 
+bool insideMap(const mrpt::maps::COccupancyGridMap2D& map, const mrpt::math::TPoint2D& p) {
+  return p.x >= map.getXMin() && p.x <= map.getXMax() && p.y >= map.getYMin() && p.y <= map.getYMax();
+}
+
 }  // namespace
 
 double landmarkShareOnWalls(const ModelManifest& manifest, const mrpt::maps::COccupancyGridMap2D& map,
@@ -32,9 +36,7 @@ double landmarkShareOnWalls(const ModelManifest& manifest, const mrpt::maps::COc
   for (const auto& zone : manifest.landmarks)
     for (const auto& landmark : zone) {
       ++all;
-      const bool inside = landmark.x >= map.getXMin() && landmark.x <= map.getXMax() && landmark.y >= map.getYMin() &&
-                          landmark.y <= map.getYMax();
-      if (inside && occupiedWithin(occupied, worldToPixel(map, landmark), radius_px)) ++on_walls;
+      if (insideMap(map, landmark) && occupiedWithin(occupied, worldToPixel(map, landmark), radius_px)) ++on_walls;
     }
   return all == 0 ? 1.0 : static_cast<double>(on_walls) / all;
 }
@@ -49,6 +51,12 @@ void requireTrainingMap(const ModelManifest& manifest, const mrpt::maps::COccupa
       << "'); this map has " << map.getResolution() << " m cells";
     throw InputError(input, s.str());
   }
+  for (size_t z = 0; z < manifest.landmarks.size(); ++z)
+    for (const auto& p : manifest.landmarks[z])
+      if (!insideMap(map, p))
+        throw InputError(input, "landmark of zone '" + manifest.zones[z] +
+                                    "' lies outside the map: the models were trained on another map (world '" +
+                                    manifest.world + "')");
   const double share = landmarkShareOnWalls(manifest, map, params);
   if (share < params.min_landmark_share_on_walls) {
     std::ostringstream s;

@@ -26,7 +26,7 @@ double landmarkShareOnWalls(const ModelManifest& manifest, const mrpt::maps::COc
                             const TrainingMapCheckParams& params = {});
 
 /// Refuses a map the models were not trained on (InputError naming the manifest): another cell
-/// size, or too few of the landmarks on its walls. Models trained on one map propose poses in
+/// size, a landmark outside it, or too few of the landmarks on its walls. Models trained on one map propose poses in
 /// that map's frame; on another map they would be confidently wrong, so they must not load.
 void requireTrainingMap(const ModelManifest& manifest, const mrpt::maps::COccupancyGridMap2D& map,
                         const TrainingMapCheckParams& params = {});

@@ -75,6 +75,16 @@ TEST(TrainingMapCheck, LandmarksOutsideTheMapDoNotCount) {
   EXPECT_DOUBLE_EQ(landmarkShareOnWalls(manifest, map), 0.0);
 }
 
+// Even with the rest on its walls, one landmark off the map means another map.
+TEST(TrainingMapCheck, ALandmarkOutsideTheMapIsRefused) {
+  auto manifest = shippedManifest("office_two_zone");
+  const auto map = worldMap("office_two_zone");
+  manifest.landmarks[1][0].x = map.getXMax() + 1.0;
+  EXPECT_GE(landmarkShareOnWalls(manifest, map), TrainingMapCheckParams{}.min_landmark_share_on_walls);
+  const auto message = inputErrorMessage([&] { requireTrainingMap(manifest, map); });
+  EXPECT_NE(message.find("landmark of zone 'east_wing' lies outside the map"), std::string::npos) << message;
+}
+
 TEST(TrainingMapCheck, AnotherCellSizeIsRefusedFirst) {
   const auto manifest = shippedManifest("office_two_zone");
   const auto map = worldMap("office_two_zone");
