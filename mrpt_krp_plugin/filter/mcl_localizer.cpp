@@ -23,18 +23,32 @@ mrpt::poses::CPose2D odometryIncrement(const mrpt::obs::CActionCollection& actio
   return move->poseChange->getMeanVal();
 }
 
+// The filter needs its own copy of the map: MRPT keeps the likelihood cache inside it.
+std::shared_ptr<mrpt::maps::COccupancyGridMap2D> filledCopy(const mrpt::maps::COccupancyGridMap2D& map,
+                                                            const SensorModelParams& sensor) {
+  auto own = std::make_shared<mrpt::maps::COccupancyGridMap2D>(map);
+  fillLikelihoodField(*own, sensor);
+  return own;
+}
+
+// A prepared map's cache is copied filled; it must hold the filter's own model's likelihoods.
+std::shared_ptr<mrpt::maps::COccupancyGridMap2D> checkedCopy(const SensorModelMap& map, const SensorModelParams& sensor) {
+  if (map.sensor != sensor)
+    throw std::invalid_argument("MclLocalizer: the map was prepared for another sensor model than the filter's");
+  return std::make_shared<mrpt::maps::COccupancyGridMap2D>(*map.grid);
+}
+
 }  // namespace
 
 MclLocalizer::MclLocalizer(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
                            std::shared_ptr<ParticleInitializer> init, MclParams params)
-    : MclLocalizer(prepareSensorModelMap(*map, params.sensor), std::move(init), params) {}
+    : MclLocalizer(OwnMap{filledCopy(*map, params.sensor)}, std::move(init), params) {}
 
 MclLocalizer::MclLocalizer(const SensorModelMap& map, std::shared_ptr<ParticleInitializer> init, MclParams params)
-    // The filter needs its own copy: MRPT keeps the likelihood cache inside the map (copied filled).
-    : map_(std::make_shared<mrpt::maps::COccupancyGridMap2D>(*map.grid)), init_(std::move(init)), params_(params),
-      kidnap_(params.kidnap) {
-  if (map.sensor != params_.sensor)
-    throw std::invalid_argument("MclLocalizer: the map was prepared for another sensor model than the filter's");
+    : MclLocalizer(OwnMap{checkedCopy(map, params.sensor)}, std::move(init), params) {}
+
+MclLocalizer::MclLocalizer(OwnMap map, std::shared_ptr<ParticleInitializer> init, MclParams params)
+    : map_(std::move(map.grid)), init_(std::move(init)), params_(params), kidnap_(params.kidnap) {
   pf_.options.metricMap = map_;
   auto& o = filter_.m_options;
   o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;

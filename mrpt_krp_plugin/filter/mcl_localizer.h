@@ -75,6 +75,10 @@ class MclLocalizer {
   const mrpt::slam::CMonteCarloLocalization2D& particles() const { return pf_; }
 
  private:
+  struct OwnMap {
+    std::shared_ptr<mrpt::maps::COccupancyGridMap2D> grid;  ///< this filter's copy, sensor model set, field filled
+  };
+  MclLocalizer(OwnMap map, std::shared_ptr<ParticleInitializer> init, MclParams params);
   void resampleSystematicIfNeeded();
   /// The guard's check of a converged filter (searches, or weighs the rival under test);
   /// true when particles were moved. `increment`: the robot's odometry since the last update.

@@ -17,19 +17,22 @@ void useSensorModel(mrpt::maps::COccupancyGridMap2D& map, const SensorModelParam
   lo.enableLikelihoodCache = true;
 }
 
-SensorModelMap prepareSensorModelMap(const mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor) {
-  auto grid = std::make_shared<mrpt::maps::COccupancyGridMap2D>(map);
-  useSensorModel(*grid, sensor);
+void fillLikelihoodField(mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor) {
+  useSensorModel(map, sensor);
   // One point at every cell's centre, weighed at the identity pose, makes MRPT compute and cache
   // each cell's likelihood; every point must count, hence no decimation for this call.
   mrpt::maps::CSimplePointsMap centres;
-  centres.reserve(static_cast<size_t>(grid->getSizeX()) * grid->getSizeY());
-  for (unsigned cy = 0; cy < grid->getSizeY(); ++cy)
-    for (unsigned cx = 0; cx < grid->getSizeX(); ++cx)
-      centres.insertPointFast(grid->idx2x(cx), grid->idx2y(cy), 0.0f);
-  grid->likelihoodOptions.LF_decimation = 1;
-  grid->computeLikelihoodField_Thrun(&centres, nullptr);
-  grid->likelihoodOptions.LF_decimation = static_cast<uint32_t>(sensor.decimation);
+  centres.reserve(static_cast<size_t>(map.getSizeX()) * map.getSizeY());
+  for (unsigned cy = 0; cy < map.getSizeY(); ++cy)
+    for (unsigned cx = 0; cx < map.getSizeX(); ++cx) centres.insertPointFast(map.idx2x(cx), map.idx2y(cy), 0.0f);
+  map.likelihoodOptions.LF_decimation = 1;
+  map.computeLikelihoodField_Thrun(&centres, nullptr);
+  map.likelihoodOptions.LF_decimation = static_cast<uint32_t>(sensor.decimation);
+}
+
+SensorModelMap prepareSensorModelMap(const mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor) {
+  auto grid = std::make_shared<mrpt::maps::COccupancyGridMap2D>(map);
+  fillLikelihoodField(*grid, sensor);
   return {grid, sensor};
 }
 

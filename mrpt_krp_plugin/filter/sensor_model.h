@@ -34,8 +34,11 @@ struct SensorModelMap {
   SensorModelParams sensor;                                      ///< the model the cache holds
 };
 
-/// Copies `map`, sets `sensor` on the copy and computes its likelihood field for every cell
-/// with MRPT's own code, so the values are those MRPT would compute on demand.
+/// Sets `sensor` on `map` and computes its likelihood field for every cell with MRPT's own code,
+/// so the values are those MRPT would compute on demand.
+void fillLikelihoodField(mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor);
+
+/// A copy of `map` with fillLikelihoodField applied, to be shared by many filters.
 SensorModelMap prepareSensorModelMap(const mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor);
 
 }  // namespace krp
