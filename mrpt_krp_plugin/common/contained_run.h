@@ -14,11 +14,12 @@ struct ContainedRunParams {
   unsigned timeout_s = 300;
 };
 
-/// Runs `work` in a forked child. Returns when it finished (returning or throwing: an
-/// exception is the caller's own reader's business and shows again when the caller runs it).
-/// Throws InputError(input, ...) when the child died by a signal or exited abnormally, saying
-/// what `work` was doing (`what`). Only async-signal-safe behaviour is relied on after fork in
-/// the parent; the child runs `work` and leaves with _exit, without running exit handlers.
+/// Runs `work` in a forked child. Returns when it finished, or threw anything but an InputError
+/// (that exception is the caller's own reader's business and shows again when the caller runs
+/// it). Throws the child's InputError itself (same input and problem), so that a file already
+/// found bad is not read a second time. Throws InputError(input, ...) when the child died by a
+/// signal or exited abnormally, saying what `work` was doing (`what`). The child runs `work` and
+/// leaves with _exit, without running exit handlers.
 void runContained(const std::function<void()>& work, const std::string& input, const std::string& what,
                   const ContainedRunParams& params = {});
 

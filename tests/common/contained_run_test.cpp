@@ -22,6 +22,25 @@ TEST(ContainedRun, AReaderThatReturnsOrThrowsIsNoCrash) {
             "");
 }
 
+TEST(ContainedRun, TheChildsInputErrorComesBackWithoutASecondRun) {
+  // The parent's copy of `runs` stays 0 when only the child ran the work.
+  int runs = 0;
+  const std::string long_problem(100000, 'x');  // more than a pipe holds: the parent must read while the child writes
+  try {
+    runContained(
+        [&] {
+          ++runs;
+          throw InputError("log.rawlog", "record 3 is truncated " + long_problem);
+        },
+        "log.rawlog", "the reader");
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.input(), "log.rawlog");
+    EXPECT_EQ(e.problem(), "record 3 is truncated " + long_problem);
+  }
+  EXPECT_EQ(runs, 0);
+}
+
 TEST(ContainedRun, ACrashBecomesAnErrorNamingTheInput) {
   const auto m = inputErrorMessage([] { runContained([] { std::abort(); }, "log.rawlog", "the reader"); });
   EXPECT_NE(m.find("log.rawlog"), std::string::npos) << m;

@@ -9,6 +9,7 @@
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
 #include "mrpt_krp_plugin/sim/trial.h"
 #include "mrpt_krp_plugin/sim/world.h"
+#include "support/input_error_message.h"
 #include "support/test_maps.h"
 
 namespace krp {
@@ -130,6 +131,15 @@ TEST(Rawlog, RejectsTruncatedAndForeignFiles) {
   EXPECT_THROW(readRawlog(dir + "/missing.rawlog"), InputError);
   test::writeText(dir + "/gt.txt", "0 1 2\n");
   EXPECT_THROW(readGroundTruth(dir + "/gt.txt"), InputError);
+}
+
+// A rawlog the rawlog fuzzer found: MRPT's deserializer reads through a null pointer in
+// CActionRobotMovement2D::serializeFrom. readRawlog must turn that into an InputError naming the file.
+TEST(Rawlog, MrptsCrashOnACorruptRecordBecomesAnInputError) {
+  const std::string crasher = std::string(KRP_SOURCE_DIR) + "/tests/fuzz/corpus/rawlog_fuzzer/mrpt_null_action_segv_crash";
+  const std::string message = test::inputErrorMessage([&] { readRawlog(crasher); });
+  EXPECT_NE(message.find(crasher), std::string::npos) << message;
+  EXPECT_NE(message.find("the file is corrupt"), std::string::npos) << message;
 }
 
 TEST(World, ReadsTheShippedWorldsAndRejectsBadKeys) {
