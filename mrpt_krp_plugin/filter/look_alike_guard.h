@@ -40,6 +40,12 @@ struct LookAlikeGuardParams {
   /// While converged and no rival is under test, the search is repeated every this many updates
   /// (a look-alike can appear as the robot moves). 0: only at each fresh convergence.
   int recheck_every_updates = 1;
+  /// Look-alikes weighed in one update at most, the one under test included: a look-alike
+  /// decided against (by its test ending, or at once on the scan it was found with) is excluded
+  /// and the search repeated, so that the estimate is reported unambiguous only when no
+  /// look-alike is left (in a corridor many places tie, and the one that lost is seldom the
+  /// last). 1: no search in the update where a test ends against its look-alike. At least 1.
+  int searches_per_update = 3;
   RivalTestParams rival_test;  ///< how a look-alike that fits nearly as well is decided
   /// Rivals decided against are left out of later searches while the filter stays converged; the
   /// oldest is forgotten beyond this many (their odometry-moved positions age).

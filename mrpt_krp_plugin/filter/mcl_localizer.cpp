@@ -112,6 +112,8 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
   const bool fresh = !converged_;
   converged_ = true;
   for (auto& place : rejected_) place = (mrpt::poses::CPose2D(place) + increment).asTPose();
+  bool search_now = fresh;
+  int searches = gp.searches_per_update;
   if (rival_) {
     rival_->move(increment);
     const auto verdict = rival_->update(*map_, scan, mean);
@@ -123,32 +125,43 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
     } else {
       if (verdict == RivalTest::Verdict::undecided) return false;
       rival_.reset();
-      updates_since_check_ = 0;
       if (verdict == RivalTest::Verdict::rival_wins) {
+        updates_since_check_ = 0;
         moveShareOfParticlesTo(place);
         return true;
       }
       rememberRejected(place);
-      return false;
+      // In a corridor many places tie: the one that lost may not be the last look-alike.
+      search_now = true;
+      --searches;  // the look-alike just decided counts as one looked at in this update
     }
   }
   ++updates_since_check_;
-  const bool due = fresh || (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
-  if (!due) return false;
+  const bool due = search_now || (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
+  if (!due || searches <= 0) return false;
+  return searchForLookAlike(scan, mean, fresh, searches);
+}
+
+bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
+                                      bool fresh, int searches) {
+  const auto& gp = guard_->params();
   updates_since_check_ = 0;
-  std::vector<mrpt::math::TPoint2D> excluded;
-  for (const auto& place : rejected_) excluded.emplace_back(place.x, place.y);
-  const auto found = guard_->lookAlike(scan, mean, excluded);
-  if (!found) return false;
-  // A place that fits at least as well at a fresh convergence gets particles at once. Later,
-  // and for places that fit a little worse, the scans that follow decide first: moving
-  // particles at every check would keep a filter that is right from ever settling.
-  if (fresh && guard_->fitsAtLeastAsWell(*found)) {
-    moveShareOfParticlesTo(found->pose);
-    return true;
-  }
-  rival_.emplace(found->pose, gp.rival_test);
-  if (rival_->update(*map_, scan, mean) == RivalTest::Verdict::tracked_wins) {
+  // A look-alike that loses at once is excluded and the search repeated, so that an estimate
+  // reported unambiguous has no look-alike left, not merely one that just lost.
+  for (int search = 0; search < searches; ++search) {
+    std::vector<mrpt::math::TPoint2D> excluded;
+    for (const auto& place : rejected_) excluded.emplace_back(place.x, place.y);
+    const auto found = guard_->lookAlike(scan, mean, excluded);
+    if (!found) return false;
+    // A place that fits at least as well at a fresh convergence gets particles at once. Later,
+    // and for places that fit a little worse, the scans that follow decide first: moving
+    // particles at every check would keep a filter that is right from ever settling.
+    if (fresh && guard_->fitsAtLeastAsWell(*found)) {
+      moveShareOfParticlesTo(found->pose);
+      return true;
+    }
+    rival_.emplace(found->pose, gp.rival_test);
+    if (rival_->update(*map_, scan, mean) != RivalTest::Verdict::tracked_wins) return false;
     rememberRejected(rival_->rival());
     rival_.reset();
   }

@@ -84,6 +84,11 @@ class MclLocalizer {
   /// true when particles were moved. `increment`: the robot's odometry since the last update.
   bool guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
                         const mrpt::math::CMatrixDouble33& cov, const mrpt::poses::CPose2D& increment);
+  /// The guard's search for a look-alike of `mean`, repeated while the ones found lose at once,
+  /// `searches` times at most; true when particles were moved. `fresh`: the filter converged at
+  /// this update.
+  bool searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean, bool fresh,
+                          int searches);
   /// Leaves `place` out of later searches (the oldest beyond the guard's memory is forgotten).
   void rememberRejected(const mrpt::math::TPose2D& place);
   /// The guard's share of the particles, spread around `place`; every weight reset.

@@ -10,6 +10,12 @@
 
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
+#include "mrpt_krp_plugin/bench/method_registry.h"
+#include "mrpt_krp_plugin/filter/sensor_model.h"
+#include "mrpt_krp_plugin/map/map_loader.h"
+#include "mrpt_krp_plugin/sim/rawlog_io.h"
+#include "mrpt_krp_plugin/sim/trial.h"
+#include "mrpt_krp_plugin/sim/world.h"
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
 #include "support/test_maps.h"
@@ -160,6 +166,46 @@ TEST(LookAlikeGuard, ReportsARightFilterAsAmbiguousUntilTheScansTellTheTwinApart
   const auto strict = run(withAmbiguityMargin(0.0), &ambiguous);
   EXPECT_EQ(ambiguous, 0);
   EXPECT_TRUE(isConcentrated(filterSpread(strict.cov), {}));
+}
+
+// krp-bench's corridor trial 20 of the degenerate scenes (scripts/bench_degenerate.sh, base
+// seed 1), replayed as the bench runs it with `global-matcher-guarded`. The filter settles 7.6 m
+// along the corridor from the robot, where many places fit the scans nearly as well. With one
+// search per update, the look-alike under test lost at the last update and the estimate was
+// reported unambiguous: confidently wrong. Searching again at once finds the next look-alike.
+TEST(LookAlikeGuard, AWrongPoseInACorridorIsNotReportedUnambiguous) {
+  constexpr uint64_t kTrialSeed = 1216750802008901446ull;    // trials.csv, trial_seed
+  constexpr uint64_t kFilterSeed = 16078727496238170605ull;  // trials.csv, filter_seed
+  const auto world = readWorld(std::string(KRP_SOURCE_DIR) + "/sim_worlds/corridor/corridor.world.yaml");
+  const auto map = loadOccupancyMap(world.map_path).grid;
+  TrialParams trial_params;
+  trial_params.steps = 10;
+  trial_params.clutter = world.clutter;
+  const Trial trial = generateTrial(*map, world.lidar(world.default_lidar_profile), trial_params, kTrialSeed);
+  const auto steps = trialToSteps(trial);
+  MclParams filter_params;
+  filter_params.seed = static_cast<uint32_t>(kFilterSeed);
+  const auto filter_map = prepareSensorModelMap(*map, filter_params.sensor);
+  MethodSettings settings;
+  settings.seeded.seed = kFilterSeed;
+  MethodResources resources;
+  resources.matcher = std::make_shared<MatcherRelocalizer>(*map, settings.matcher);
+  auto confidentlyWrongAtTheEnd = [&](int searches_per_update) {
+    settings.guard.searches_per_update = searches_per_update;
+    MclLocalizer loc(filter_map, makeInitializer("global-matcher-guarded", settings, resources), filter_params);
+    loc.setLookAlikeGuard(makeLookAlikeGuard(*map, settings));
+    MclEstimate e;
+    for (const auto& step : steps) e = loc.update(step);
+    return distance(e.mean, trial.truth.back()) > 1.0 && isConcentrated(filterSpread(e.cov), {});
+  };
+  EXPECT_TRUE(confidentlyWrongAtTheEnd(1)) << "the trial shows the fault with a single search per update";
+  EXPECT_FALSE(confidentlyWrongAtTheEnd(LookAlikeGuardParams{}.searches_per_update));
+}
+
+TEST(LookAlikeGuard, RefusesNoSearchPerUpdate) {
+  LookAlikeGuardParams p;
+  p.searches_per_update = 0;
+  EXPECT_THROW(LookAlikeGuard(std::make_shared<CorrelativeMatcher>(test::asymmetricRoom()), p), std::invalid_argument);
 }
 
 }  // namespace
