@@ -35,6 +35,7 @@ static int run(int argc, char** argv) {
     w.lidar_profiles = {"omni_12m", "lds01", "safety_270"};
     w.default_lidar_profile = "omni_12m";
     if (name == "warehouse") w.clutter.pallets_per_100m2 = 0.5;  // a warehouse floor holds more pallets
+    w.trial_start_zone = built.trial_start_zone;
     krp::writeWorld(w, (dir / (name + ".world.yaml")).string());
     std::cout << name << ": " << built.map.getSizeX() << " x " << built.map.getSizeY() << " cells, "
               << krp::freeAreaM2(built.map) << " m^2 free, " << built.zones.size() << " zones -> " << dir.string() << "\n";

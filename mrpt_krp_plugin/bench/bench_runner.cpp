@@ -41,6 +41,15 @@ Trial generateKidnapTrial(const mrpt::maps::COccupancyGridMap2D& map, const Lida
                                  std::to_string(cfg.kidnap_max_draws) + " draws: the map is too small");
 }
 
+// The polygon of the world's trial_start_zone (empty when it names none).
+std::vector<mrpt::math::TPoint2D> trialStartRegion(const World& world) {
+  if (world.trial_start_zone.empty()) return {};
+  for (const auto& zone : readZonesYaml(world.zones_path))
+    if (zone.name == world.trial_start_zone) return zone.polygon;
+  throw InputError("world '" + world.name + "'",
+                   "trial_start_zone '" + world.trial_start_zone + "' is not a zone of " + world.zones_path);
+}
+
 }  // namespace
 
 std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
@@ -60,6 +69,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     LidarProfile lidar;
     size_t world_index, lidar_index;
     MethodResources resources;
+    std::vector<mrpt::math::TPoint2D> start_region;  ///< where trials start (empty: anywhere)
   };
   std::vector<Job> jobs;
   for (size_t wi = 0; wi < cfg.world_files.size(); ++wi) {
@@ -88,7 +98,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         log << "krp-bench: " << w.name << " / " << lidars[li] << ": models " << models << " (lidar "
             << r.manifest().lidar_name << ")\n";
       }
-      jobs.push_back({w, map, filter_map, w.lidar(lidars[li]), wi, li, res});
+      jobs.push_back({w, map, filter_map, w.lidar(lidars[li]), wi, li, res, trialStartRegion(w)});
     }
   }
   log << "krp-bench: base seed " << cfg.seed << "; " << jobs.size() << " world/lidar pair(s) x " << cfg.methods.size()
@@ -104,6 +114,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
       const uint64_t filter_seed = deriveSeed(trial_seed, kFilterStream);
       TrialParams tp = cfg.trial;
       tp.clutter = job.world.clutter;
+      tp.start_region = job.start_region;
       const Trial trial = cfg.kidnap_at_step > 0 ? generateKidnapTrial(*job.map, job.lidar, tp, cfg, trial_seed)
                                                  : generateTrial(*job.map, job.lidar, tp, trial_seed);
       const auto steps = trialToSteps(trial);

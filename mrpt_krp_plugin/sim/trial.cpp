@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/sim/trial.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -51,6 +53,16 @@ Trial generateTrial(const mrpt::maps::COccupancyGridMap2D& map, const LidarProfi
   const ClearanceMap clearance(world);
   std::vector<cv::Point> starts;
   cv::findNonZero(clearance.dist() > p.clearance_m, starts);
+  if (!p.start_region.empty()) {
+    std::vector<cv::Point2f> region;
+    for (const auto& v : p.start_region) region.emplace_back(static_cast<float>(v.x), static_cast<float>(v.y));
+    const auto outside = [&](const cv::Point& px) {
+      const auto xy = pixelToWorld(world, px);
+      return cv::pointPolygonTest(region, cv::Point2f(static_cast<float>(xy.x), static_cast<float>(xy.y)), false) < 0;
+    };
+    starts.erase(std::remove_if(starts.begin(), starts.end(), outside), starts.end());
+    if (starts.empty()) throw InputError("trial generator", "no free pose with the required clearance in the start region");
+  }
   if (starts.empty()) throw InputError("trial generator", "no free pose with the required clearance in the map");
 
   const ScanSimulator simulator(lidar, p.scanner);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
@@ -28,6 +29,9 @@ struct TrialParams {
   double max_turn_deg = 15.0;       ///< heading change per step, uniform in +-this [deg]
   double clearance_m = 0.35;        ///< the robot keeps this far from anything (clutter included) [m]
   int max_step_attempts = 24;       ///< headings tried before turning in place
+  /// The robot starts inside this polygon (grid-frame metres); empty: anywhere with clearance.
+  /// Lets a bench put every trial in one part of a map (a zone the models never saw).
+  std::vector<mrpt::math::TPoint2D> start_region;
   OdometryNoiseParams odometry;
   ClutterParams clutter;
   ScanSimulatorParams scanner;
@@ -44,7 +48,8 @@ struct Trial {
 };
 
 /// Generates a trial against `map` (clutter is added to the simulation copy only).
-/// Deterministic in `seed`. Throws InputError if the map has no pose with the clearance.
+/// Deterministic in `seed`. Throws InputError if the map has no pose with the clearance (inside
+/// `start_region` when one is given).
 Trial generateTrial(const mrpt::maps::COccupancyGridMap2D& map, const LidarProfile& lidar, const TrialParams& params,
                     uint64_t seed);
 

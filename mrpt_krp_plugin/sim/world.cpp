@@ -45,7 +45,8 @@ namespace {
 World interpretWorld(const YAML::Node& root, const std::string& path) {
   if (!root.IsMap()) throw InputError(path, "expected a YAML mapping");
   rejectUnknownYamlKeys(root,
-                        {"name", "map", "zones", "lidar_profiles", "default_lidar_profile", "lidar_overrides", "clutter"},
+                        {"name", "map", "zones", "lidar_profiles", "default_lidar_profile", "lidar_overrides", "clutter",
+                         "trial_start_zone"},
                         path);
   for (const char* req : {"name", "map", "zones", "lidar_profiles"})
     if (!root[req]) throw InputError(path, std::string("missing required key '") + req + "'");
@@ -84,6 +85,14 @@ World interpretWorld(const YAML::Node& root, const std::string& path) {
     if (c["placement_clearance_m"]) k.placement_clearance_m = number(c, "placement_clearance_m", path, 0.0, 10.0);
     if (k.box_min_side_m > k.box_max_side_m) throw InputError(path, "clutter.box_min_side_m > clutter.box_max_side_m");
   }
+  if (const auto z = root["trial_start_zone"]) {
+    try {
+      w.trial_start_zone = z.as<std::string>();
+    } catch (const YAML::Exception&) {
+      throw InputError(path, "key 'trial_start_zone' is not a zone name");
+    }
+    if (w.trial_start_zone.empty()) throw InputError(path, "key 'trial_start_zone' is empty");
+  }
   return w;
 }
 }  // namespace
@@ -110,6 +119,7 @@ void writeWorld(const World& w, const std::string& path) {
     << "\n  box_max_side_m: " << c.box_max_side_m << "\n  pallets_per_100m2: " << c.pallets_per_100m2
     << "\n  people_per_100m2: " << c.people_per_100m2 << "\n  placement_clearance_m: " << c.placement_clearance_m
     << "\n";
+  if (!w.trial_start_zone.empty()) o << "trial_start_zone: " << w.trial_start_zone << "\n";
   writeFileAtomically(path, o.str());
 }
 

@@ -28,6 +28,9 @@ struct World {
   double range_noise_std_m = -1.0;     ///< < 0: keep each profile's own [m]
   double dropout_probability = -1.0;   ///< < 0: keep each profile's own
   ClutterParams clutter;
+  /// Trials start inside the zone of this name (of the zones file); empty: anywhere. For scenes
+  /// that put the robot where the models were not trained (scripts/bench_unseen_zone.sh).
+  std::string trial_start_zone;
 
   /// A profile of this world with the world's overrides applied; InputError if not listed.
   LidarProfile lidar(const std::string& profile_name) const;

@@ -61,18 +61,22 @@ Zone rectangleZone(const std::string& name, double x0, double y0, double x1, dou
   return Zone{name, {{lx, ly}, {hx, ly}, {hx, hy}, {lx, hy}}};
 }
 
-BuiltWorld buildOfficeTwoZone(uint64_t seed) {
-  Rng rng(seed);
-  const double w = 34.0, h = 22.0;
-  FloorPlan plan(w + 2 * kMargin, h + 2 * kMargin, kWorldResolutionM);
+namespace {
+constexpr double kOfficeWidthM = 34.0, kOfficeHeightM = 22.0;
+constexpr double kOfficeCorridorLo = 9.5, kOfficeCorridorHi = 12.0;  ///< corridor walls above the office's floor [m]
+
+// office_two_zone's building, drawn at (kMargin, kMargin) on `plan` (which may be larger), and
+// its two wings as zones, which reach the edges of the office's own canvas whatever `plan`'s
+// size, so a larger world holds the same two zones.
+std::vector<Zone> drawOffice(FloorPlan& plan, Rng& rng) {
+  const double w = kOfficeWidthM, h = kOfficeHeightM;
   const double x0 = kMargin, y0 = kMargin, x1 = kMargin + w, y1 = kMargin + h;
   plan.building(x0, y0, x1, y1);
-  const double corridor_lo = y0 + 9.5, corridor_hi = y0 + 12.0;
+  const double corridor_lo = y0 + kOfficeCorridorLo, corridor_hi = y0 + kOfficeCorridorHi;
   const auto north_walls = roomRow(plan, rng, x0, x1, corridor_hi, y1, corridor_hi, 4.0, 7.5, true);
   const auto south_walls = roomRow(plan, rng, x0, x1, y0, corridor_lo, corridor_lo, 4.0, 7.5, true);
   // An open lounge in the right wing: one wider gap in the lower corridor wall.
   plan.free(x0 + 24.0, corridor_lo - 0.2, x0 + 27.0, corridor_lo + 0.2);
-  BuiltWorld out{"office_two_zone", plan.toGrid(), {}};
   // The wings meet at the room walls nearest the middle; the corridor, with no wall to follow,
   // is split at the middle.
   const double mid = x0 + w / 2, north = nearestLine(north_walls, mid), south = nearestLine(south_walls, mid);
@@ -82,13 +86,45 @@ BuiltWorld buildOfficeTwoZone(uint64_t seed) {
   const double south_side = south > mid ? 1.0 : -1.0, north_side = north > mid ? 1.0 : -1.0;
   const double west_lo = corridor_lo - south_side * r, east_lo = corridor_lo + south_side * r;
   const double west_hi = corridor_hi + north_side * r, east_hi = corridor_hi - north_side * r;
-  out.zones.push_back(Zone{"west_wing",
-                           {{r, r}, {south - r, r}, {south - r, west_lo}, {mid - r, west_lo}, {mid - r, west_hi},
-                            {north - r, west_hi}, {north - r, H - r}, {r, H - r}}});
-  out.zones.push_back(Zone{"east_wing",
-                           {{south + r, r}, {W - r, r}, {W - r, H - r}, {north + r, H - r}, {north + r, east_hi},
-                            {mid + r, east_hi}, {mid + r, east_lo}, {south + r, east_lo}}});
-  return out;
+  return {Zone{"west_wing",
+               {{r, r}, {south - r, r}, {south - r, west_lo}, {mid - r, west_lo}, {mid - r, west_hi},
+                {north - r, west_hi}, {north - r, H - r}, {r, H - r}}},
+          Zone{"east_wing",
+               {{south + r, r}, {W - r, r}, {W - r, H - r}, {north + r, H - r}, {north + r, east_hi},
+                {mid + r, east_hi}, {mid + r, east_lo}, {south + r, east_lo}}}};
+}
+}  // namespace
+
+BuiltWorld buildOfficeTwoZone(uint64_t seed) {
+  Rng rng(seed);
+  FloorPlan plan(kOfficeWidthM + 2 * kMargin, kOfficeHeightM + 2 * kMargin, kWorldResolutionM);
+  auto zones = drawOffice(plan, rng);
+  return BuiltWorld{"office_two_zone", plan.toGrid(), std::move(zones), ""};
+}
+
+BuiltWorld buildOfficeUnseenWing(uint64_t seed) {
+  Rng rng(seed);  // the office's own draws come first, so its rooms match office_two_zone's
+  constexpr double kWingWidthM = 16.0;
+  FloorPlan plan(kOfficeWidthM + kWingWidthM + 2 * kMargin, kOfficeHeightM + 2 * kMargin, kWorldResolutionM);
+  auto zones = drawOffice(plan, rng);
+  // The wing shares the office's east wall; a door where the corridor ends leads into it, its
+  // jambs clear of the corridor's corners so the office's landmarks stay on walls.
+  const double x1 = kMargin + kOfficeWidthM, x2 = x1 + kWingWidthM, y0 = kMargin, y1 = kMargin + kOfficeHeightM;
+  plan.building(x1, y0, x2, y1);
+  const double door_lo = y0 + (kOfficeCorridorLo + kOfficeCorridorHi - kDoorWidthM) / 2;
+  plan.free(x1 - 0.2, door_lo, x1 + 0.2, door_lo + kDoorWidthM);
+  // Open plan, unlike any office room: rows of columns and free-standing partitions.
+  Rng wing_rng(deriveSeed(seed, 0x756e7365656eull));
+  for (double cx = x1 + 4.0; cx < x2 - 1.0; cx += 4.0)
+    for (double cy = y0 + 4.0; cy < y1 - 1.0; cy += 5.0) plan.solid(cx - 0.25, cy - 0.25, cx + 0.25, cy + 0.25);
+  for (int i = 0; i < 4; ++i) {
+    const double px = wing_rng.uniform(x1 + 2.0, x2 - 4.0), py = wing_rng.uniform(y0 + 2.0, y1 - 2.0);
+    if (wing_rng.bernoulli(0.5)) plan.wall(px, py, px + wing_rng.uniform(1.5, 3.0), py);
+    else plan.wall(px, py, px, std::min(y1 - 1.0, py + wing_rng.uniform(1.5, 3.0)));
+  }
+  const double office_canvas_w = kOfficeWidthM + 2 * kMargin, H = kOfficeHeightM + 2 * kMargin;
+  zones.push_back(rectangleZone("unseen_wing", office_canvas_w, 0.0, x2 + kMargin, H, kWorldResolutionM));
+  return BuiltWorld{"office_unseen_wing", plan.toGrid(), std::move(zones), "unseen_wing"};
 }
 
 BuiltWorld buildWarehouse(uint64_t seed) {
@@ -117,7 +153,7 @@ BuiltWorld buildWarehouse(uint64_t seed) {
   plan.free(x0 + w - 0.2, y0 + 10.0, x0 + w + 0.8, y0 + 14.0);
   plan.wall(x0 + w + 0.8, y0 + 10.0, x0 + w + 0.8, y0 + 14.0);
   plan.solid(x0 + 0.1, y0 + h - 5.0, x0 + 2.5 + rng.uniform(0.0, 0.5), y0 + h - 0.1);
-  BuiltWorld out{"warehouse", plan.toGrid(), {}};
+  BuiltWorld out{"warehouse", plan.toGrid(), {}, ""};
   // Quadrants that follow the racks: west and east meet in the middle of the cross aisle, south
   // and north along the aisle nearest the middle, so no rack is cut in two (a rack split between
   // two zones shows the classifier the same aisle under two names).
@@ -149,7 +185,7 @@ BuiltWorld buildLargeFloor(uint64_t seed) {
     roomRow(plan, rng, xs, xe, c2 + cw, y0 + h, c2 + cw, 5.0, 10.0, true);
   }
   plan.free(spine, y0 + 0.1, spine + cw, y0 + h - 0.1);
-  BuiltWorld out{"large_floor", plan.toGrid(), {}};
+  BuiltWorld out{"large_floor", plan.toGrid(), {}, ""};
   AutoZoningParams zp;
   zp.target_area_m2 = 250.0;
   zp.seed = seed;
@@ -162,7 +198,7 @@ namespace {
 BuiltWorld emptyBuilding(const std::string& name, double w, double h) {
   FloorPlan plan(w + 2 * kMargin, h + 2 * kMargin, kWorldResolutionM);
   plan.building(kMargin, kMargin, kMargin + w, kMargin + h);
-  BuiltWorld out{name, plan.toGrid(), {}};
+  BuiltWorld out{name, plan.toGrid(), {}, ""};
   const double W = w + 2 * kMargin, H = h + 2 * kMargin;
   out.zones.push_back(rectangleZone("west_half", 0.0, 0.0, W / 2, H, kWorldResolutionM));
   out.zones.push_back(rectangleZone("east_half", W / 2, 0.0, W, H, kWorldResolutionM));
@@ -178,7 +214,7 @@ BuiltWorld buildEmptyHall(uint64_t /*seed*/) { return emptyBuilding("empty_hall"
 
 const std::vector<std::string>& worldNames() {
   static const std::vector<std::string> names = {"office_two_zone", "warehouse", "large_floor", "corridor",
-                                                 "empty_hall"};
+                                                 "empty_hall", "office_unseen_wing"};
   return names;
 }
 
@@ -188,7 +224,10 @@ BuiltWorld buildWorld(const std::string& name, uint64_t seed) {
   if (name == "large_floor") return buildLargeFloor(seed);
   if (name == "corridor") return buildCorridor(seed);
   if (name == "empty_hall") return buildEmptyHall(seed);
-  throw InputError("world '" + name + "'", "unknown (known: office_two_zone, warehouse, large_floor, corridor, empty_hall)");
+  if (name == "office_unseen_wing") return buildOfficeUnseenWing(seed);
+  std::string known;
+  for (const auto& n : worldNames()) known += (known.empty() ? "" : ", ") + n;
+  throw InputError("world '" + name + "'", "unknown (known: " + known + ")");
 }
 
 }  // namespace krp

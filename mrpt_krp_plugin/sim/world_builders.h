@@ -16,6 +16,7 @@ struct BuiltWorld {
   std::string name;
   mrpt::maps::COccupancyGridMap2D map;
   std::vector<Zone> zones;
+  std::string trial_start_zone;  ///< World::trial_start_zone of the world file (empty: none)
 };
 
 constexpr double kWorldResolutionM = 0.05;  ///< cell size of every generated world [m]
@@ -35,6 +36,11 @@ BuiltWorld buildLargeFloor(uint64_t seed);
 /// featureless corridor and a 40 x 30 m empty hall, two zones each. The seed is unused.
 BuiltWorld buildCorridor(uint64_t seed);
 BuiltWorld buildEmptyHall(uint64_t seed);
+
+/// office_two_zone (same seed, same rooms, same two zones) with a 16 x 22 m open-plan wing
+/// beyond its east wall, a third zone `unseen_wing` that models trained on office_two_zone never
+/// saw; its world file starts every trial there (scripts/bench_unseen_zone.sh).
+BuiltWorld buildOfficeUnseenWing(uint64_t seed);
 
 /// The names accepted by `buildWorld`.
 const std::vector<std::string>& worldNames();

@@ -8,16 +8,16 @@
 
 #include <cmath>
 
+#include "mrpt_krp_plugin/bench/method_registry.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
-#include "mrpt_krp_plugin/bench/method_registry.h"
 #include "mrpt_krp_plugin/filter/sensor_model.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 #include "mrpt_krp_plugin/sim/trial.h"
-#include "mrpt_krp_plugin/sim/world.h"
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
+#include "mrpt_krp_plugin/sim/world.h"
 #include "support/test_maps.h"
 
 namespace krp {

@@ -72,6 +72,19 @@ TEST(Trial, PathStepsAreSmallAndStayInFreeSpace) {
   }
 }
 
+TEST(Trial, StartsInsideTheStartRegion) {
+  const auto room = test::asymmetricRoom();
+  TrialParams p;
+  p.steps = 0;
+  p.start_region = {{1.0, 1.0}, {3.0, 1.0}, {3.0, 3.0}, {1.0, 3.0}};
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    const auto start = generateTrial(room, lidarProfileByName("lds01"), p, seed).truth.front();
+    EXPECT_TRUE(start.x >= 1.0 && start.x <= 3.0 && start.y >= 1.0 && start.y <= 3.0) << start.x << " " << start.y;
+  }
+  p.start_region = {{-5.0, -5.0}, {-4.0, -5.0}, {-4.0, -4.0}};  // outside the map
+  EXPECT_THROW(generateTrial(room, lidarProfileByName("lds01"), p, 1), InputError);
+}
+
 TEST(Trial, ClutterChangesScansButNotTheMap) {
   const auto room = test::asymmetricRoom();
   const auto lidar = lidarProfileByName("omni_12m");
@@ -143,9 +156,10 @@ TEST(Rawlog, MrptsCrashOnACorruptRecordBecomesAnInputError) {
 }
 
 TEST(World, ReadsTheShippedWorldsAndRejectsBadKeys) {
-  for (const char* name : {"office_two_zone", "warehouse", "large_floor"}) {
+  for (const char* name : {"office_two_zone", "warehouse", "large_floor", "office_unseen_wing"}) {
     const auto w = readWorld(std::string(KRP_SOURCE_DIR) + "/sim_worlds/" + name + "/" + name + ".world.yaml");
     EXPECT_EQ(w.name, name);
+    EXPECT_EQ(w.trial_start_zone, std::string(name) == "office_unseen_wing" ? "unseen_wing" : "");
     EXPECT_EQ(w.lidar(w.default_lidar_profile).name, "omni_12m");
     EXPECT_THROW(w.lidar("laser_pointer"), InputError);
   }
@@ -154,6 +168,8 @@ TEST(World, ReadsTheShippedWorldsAndRejectsBadKeys) {
   EXPECT_THROW(readWorld(dir + "/w.world.yaml"), InputError);
   test::writeText(dir + "/p.world.yaml", "name: w\nmap: m.yaml\nzones: z.yaml\nlidar_profiles: [sonar]\n");
   EXPECT_THROW(readWorld(dir + "/p.world.yaml"), InputError);
+  test::writeText(dir + "/z.world.yaml", "name: w\nmap: m.yaml\nzones: z.yaml\nlidar_profiles: [omni_12m]\ntrial_start_zone: [a]\n");
+  EXPECT_THROW(readWorld(dir + "/z.world.yaml"), InputError);
   // Found by zones_world_fuzzer: a section given as a scalar let yaml-cpp's exception out.
   test::writeText(dir + "/s.world.yaml",
                   "name: w\nmap: m.yaml\nzones: z.yaml\nlidar_profiles: [omni_12m]\nclutter: 3\n");

@@ -145,6 +145,36 @@ TEST(WorldBuilders, OfficeWingsMeetOnlyInTheCorridor) {
   EXPECT_LE(crossings, corridor_width_m / kWorldResolutionM);
 }
 
+// The unseen wing is office_two_zone plus a wing: every cell of the office up to its east wall is
+// the same, the two wings are the same zones, and the wing is a third zone.
+TEST(WorldBuilders, UnseenWingKeepsTheOfficeAndAddsAZone) {
+  const auto office = buildOfficeTwoZone(1);
+  const auto extended = buildOfficeUnseenWing(1);
+  EXPECT_TRUE(findZoneProblems(extended.map, extended.zones).empty());
+  ASSERT_EQ(extended.zones.size(), 3u);
+  EXPECT_EQ(extended.zones[2].name, "unseen_wing");
+  EXPECT_EQ(extended.trial_start_zone, "unseen_wing");
+  for (size_t z = 0; z < 2; ++z) {
+    EXPECT_EQ(extended.zones[z].name, office.zones[z].name);
+    ASSERT_EQ(extended.zones[z].polygon.size(), office.zones[z].polygon.size());
+    for (size_t v = 0; v < office.zones[z].polygon.size(); ++v) {
+      EXPECT_EQ(extended.zones[z].polygon[v].x, office.zones[z].polygon[v].x);
+      EXPECT_EQ(extended.zones[z].polygon[v].y, office.zones[z].polygon[v].y);
+    }
+  }
+  ASSERT_EQ(extended.map.getYMin(), office.map.getYMin());
+  ASSERT_EQ(extended.map.getXMin(), office.map.getXMin());
+  ASSERT_EQ(extended.map.getSizeY(), office.map.getSizeY());
+  ASSERT_GT(extended.map.getSizeX(), office.map.getSizeX());
+  // West of the office's east wall (at 35 m; the door is cut 0.2 m either side of it) every cell
+  // is the same; beyond it the wing begins.
+  const unsigned east_wall_cell = office.map.x2idx(35.0 - 0.25);
+  int differing = 0;
+  for (unsigned y = 0; y < office.map.getSizeY(); ++y)
+    for (unsigned x = 0; x < east_wall_cell; ++x) differing += office.map.getCell(x, y) != extended.map.getCell(x, y);
+  EXPECT_EQ(differing, 0);
+}
+
 // The warehouse's quadrants meet in the cross aisle and in an aisle between two rack rows: no rack
 // is cut in two, so the only obstacles a boundary crosses are the four building walls.
 TEST(WorldBuilders, WarehouseQuadrantsCutNoRack) {
