@@ -40,6 +40,41 @@ TEST(RosBagReader, GivesTheTrialsScansAndOdometryBack) {
   EXPECT_EQ(scan->getScanSize(), t.scans[2]->getScanSize());
 }
 
+// A robot's bag may be recorded with `rosbag record --bz2` or `--lz4`: the framing check leaves
+// compressed chunks to rosbag, and the same scans and odometry come out.
+TEST(RosBagReader, CompressedBagsGiveTheSameSteps) {
+  const Trial t = smallTrial();
+  const std::string dir = krp::test::tempDir("bag_reader_compressed");
+  test::writeTrialBag(t, dir + "/plain.bag");
+  const auto plain = readBag(dir + "/plain.bag");
+  for (const auto compression : {rosbag::compression::BZ2, rosbag::compression::LZ4}) {
+    const std::string path = dir + "/compressed_" + std::to_string(static_cast<int>(compression)) + ".bag";
+    test::writeTrialBag(t, path, mrpt::math::TPose2D(1.0, -2.0, 0.5), compression);
+    ASSERT_NE(std::filesystem::file_size(path), std::filesystem::file_size(dir + "/plain.bag"));
+    const auto bag = readBag(path);
+    ASSERT_EQ(bag.steps.size(), plain.steps.size());
+    for (size_t i = 0; i < bag.steps.size(); ++i) {
+      const auto a = bag.steps[i].observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+      const auto b = plain.steps[i].observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+      ASSERT_TRUE(a && b);
+      ASSERT_EQ(a->getScanSize(), b->getScanSize());
+      for (size_t k = 0; k < a->getScanSize(); ++k) ASSERT_EQ(a->getScanRange(k), b->getScanRange(k)) << i << " " << k;
+    }
+  }
+}
+
+// Found by bag_fuzzer: a corrupt record inside an lz4 chunk made roscpp's header parser read
+// past its buffer (the framing check used to leave compressed chunks to rosbag).
+TEST(RosBagReader, ACorruptRecordInACompressedChunkIsRefused) {
+  const std::string path = std::string(KRP_ROS1_DIR) + "/../tests/fuzz/corpus/bag_fuzzer/lz4_chunk_inner_header_overflow_crash";
+  try {
+    readBag(path);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("corrupt bag at byte"), std::string::npos) << e.what();
+  }
+}
+
 TEST(RosBagReader, BadBagsAreInputErrors) {
   const Trial t = smallTrial();
   const std::string dir = krp::test::tempDir("bag_reader_bad");

@@ -136,6 +136,13 @@ int main(int argc, char** argv) {
 #ifdef KRP_FUZZ_WITH_ROS1
   krp::ros1::test::writeTrialBag(trial, (scratch / "t.bag").string());
   writeBytes(out / "bag_fuzzer/trial", readBytes(scratch / "t.bag"));
+  // Compressed chunks, whose inside the framing check leaves to rosbag's decompressors.
+  krp::ros1::test::writeTrialBag(trial, (scratch / "t_bz2.bag").string(), mrpt::math::TPose2D(1.0, -2.0, 0.5),
+                                 rosbag::compression::BZ2);
+  writeBytes(out / "bag_fuzzer/trial_bz2", readBytes(scratch / "t_bz2.bag"));
+  krp::ros1::test::writeTrialBag(trial, (scratch / "t_lz4.bag").string(), mrpt::math::TPose2D(1.0, -2.0, 0.5),
+                                 rosbag::compression::LZ4);
+  writeBytes(out / "bag_fuzzer/trial_lz4", readBytes(scratch / "t_lz4.bag"));
   // Messages are built field by field from the bytes (see ros_messages_fuzzer.cpp): a few
   // patterns are enough to start from.
   writeBytes(out / "ros_messages_fuzzer/scan", std::string("\x01") + std::string(256, '\x40'));

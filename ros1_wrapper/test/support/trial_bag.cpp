@@ -10,8 +10,10 @@
 namespace krp::ros1::test {
 
 
-void writeTrialBag(const Trial& trial, const std::string& path, const mrpt::math::TPose2D& odom_origin) {
+void writeTrialBag(const Trial& trial, const std::string& path, const mrpt::math::TPose2D& odom_origin,
+                   rosbag::compression::CompressionType compression) {
   rosbag::Bag bag(path, rosbag::bagmode::Write);
+  bag.setCompression(compression);
   const ros::Time start(100.0);
   tf2_msgs::TFMessage statics;
   const auto& mount = trial.scans.front()->sensorPose;
