@@ -76,6 +76,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     const World w = readWorld(cfg.world_files[wi]);
     const auto map = loadOccupancyMap(w.map_path).grid;
     const auto filter_map = prepareSensorModelMap(*map, cfg.mcl.sensor);
+    const auto start_region = trialStartRegion(w);
     const auto lidars = cfg.lidars.empty() ? std::vector<std::string>{w.default_lidar_profile} : cfg.lidars;
     std::shared_ptr<const MatcherRelocalizer> matcher;
     if (need_matcher) matcher = std::make_shared<MatcherRelocalizer>(*map, cfg.method_settings.matcher);
@@ -98,7 +99,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         log << "krp-bench: " << w.name << " / " << lidars[li] << ": models " << models << " (lidar "
             << r.manifest().lidar_name << ")\n";
       }
-      jobs.push_back({w, map, filter_map, w.lidar(lidars[li]), wi, li, res, trialStartRegion(w)});
+      jobs.push_back({w, map, filter_map, w.lidar(lidars[li]), wi, li, res, start_region});
     }
   }
   log << "krp-bench: base seed " << cfg.seed << "; " << jobs.size() << " world/lidar pair(s) x " << cfg.methods.size()

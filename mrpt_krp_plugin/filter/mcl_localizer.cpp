@@ -112,8 +112,6 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
   const bool fresh = !converged_;
   converged_ = true;
   for (auto& place : rejected_) place = (mrpt::poses::CPose2D(place) + increment).asTPose();
-  bool search_now = fresh;
-  int searches = gp.searches_per_update;
   if (rival_) {
     rival_->move(increment);
     const auto verdict = rival_->update(*map_, scan, mean);
@@ -131,15 +129,16 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
         return true;
       }
       rememberRejected(place);
-      // In a corridor many places tie: the one that lost may not be the last look-alike.
-      search_now = true;
-      --searches;  // the look-alike just decided counts as one looked at in this update
+      updates_since_check_ = 0;
+      // In a corridor many places tie: the one that lost may not be the last look-alike. It
+      // counts as one of the look-alikes weighed in this update.
+      return gp.searches_per_update > 1 && searchForLookAlike(scan, mean, fresh, gp.searches_per_update - 1);
     }
   }
   ++updates_since_check_;
-  const bool due = search_now || (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
-  if (!due || searches <= 0) return false;
-  return searchForLookAlike(scan, mean, fresh, searches);
+  const bool due = fresh || (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
+  if (!due) return false;
+  return searchForLookAlike(scan, mean, fresh, gp.searches_per_update);
 }
 
 bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
