@@ -56,6 +56,9 @@ static int run(int argc, char** argv) {
                 {"guard-ambiguity-margin", "S", "methods with the look-alike guard: a place scoring within this of the "
                  "filter's mean (matcher score) makes the estimate ambiguous, so not confident (0 = only places that "
                  "fit at least as well)", krp::formatNumber(krp::LookAlikeGuardParams{}.ambiguity_margin)},
+                {"guard-min-fit-fraction", "F", "methods with the look-alike guard: a converged estimate explaining fewer "
+                 "than this share of the scan's returns is reported unsettled, so not confident (0 = off)",
+                 krp::formatNumber(krp::LookAlikeGuardParams{}.min_fit_fraction)},
                 {"calibration", "FILE", "relocalizing methods: a confidence calibration (--fit-calibration's output) "
                  "applied before the 'localized' threshold", ""},
                 {"fit-calibration", "FILE", "fit a confidence calibration on this run's first-scan answers (one world, "
@@ -95,6 +98,9 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.ambiguity_margin = args.number("guard-ambiguity-margin");
   if (!(cfg.method_settings.guard.ambiguity_margin >= 0.0 && cfg.method_settings.guard.ambiguity_margin <= 1.0))
     throw krp::InputError("--guard-ambiguity-margin", "must be in [0, 1]");
+  cfg.method_settings.guard.min_fit_fraction = args.number("guard-min-fit-fraction");
+  if (!(cfg.method_settings.guard.min_fit_fraction >= 0.0 && cfg.method_settings.guard.min_fit_fraction <= 1.0))
+    throw krp::InputError("--guard-min-fit-fraction", "must be in [0, 1]");
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");
   if (!calibration.empty()) {
     if (!fit_calibration.empty())

@@ -294,7 +294,8 @@ static int run(int argc, char** argv) {
   if (krp::methodUsesLookAlikeGuard(s["method"])) loc.setLookAlikeGuard(krp::makeLookAlikeGuard(*map.grid, ms));
 
   std::ostringstream csv;
-  csv << "step,x_m,y_m,phi_rad,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s" << (truth.empty() ? "" : ",error_xy_m,error_phi_deg")
+  csv << "step,x_m,y_m,phi_rad,std_xy_m,std_phi_deg,ambiguous,scan_unexplained,particles,cpu_s"
+      << (truth.empty() ? "" : ",error_xy_m,error_phi_deg")
       << "\n";
   std::vector<krp::UpdateRecord> records;
   krp::MclEstimate e;
@@ -303,7 +304,7 @@ static int run(int argc, char** argv) {
     const auto r = krp::makeUpdateRecord(e, truth.empty() ? e.mean : truth[i], 0.0);
     records.push_back(r);
     csv << i << "," << e.mean.x << "," << e.mean.y << "," << e.mean.phi << "," << r.spread.xy_std_m << "," << r.spread.phi_std_deg << ","
-        << r.ambiguous << "," << e.particles << "," << e.cpu_s;
+        << r.ambiguous << "," << r.scan_unexplained << "," << e.particles << "," << e.cpu_s;
     if (!truth.empty()) csv << "," << r.error_xy_m << "," << r.error_phi_deg;
     csv << "\n";
   }
@@ -318,6 +319,9 @@ static int run(int argc, char** argv) {
   if (e.ambiguous_with)
     sum << "ambiguous: a look-alike place fits the last scan nearly as well, at "
         << mrpt::poses::CPose2D(*e.ambiguous_with).asString() << " (grid frame); the std above covers both\n";
+  if (e.scan_unexplained)
+    sum << "unsettled: the map explains only " << e.fit_fraction
+        << " of the last scan's returns (clutter?); the std above is widened\n";
   double cpu = 0;
   for (const auto& r : records) cpu += r.cpu_s;
   sum << "localization CPU: " << cpu << " s\n";

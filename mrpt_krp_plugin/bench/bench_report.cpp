@@ -179,7 +179,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                 "seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,seed_cpu_s,kidnap_step,kidnap_tracking_before,"
                 "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s\n";
   updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s,"
-                 "distance_m\n";
+                 "distance_m,fit_fraction,scan_unexplained\n";
   for (const auto& r : records) {
     const auto& o = r.outcome;
     trials_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << r.trial_seed << ","
@@ -195,7 +195,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
       const auto& u = r.updates[i];
       updates_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << i << "," << u.error_xy_m
                   << "," << u.error_phi_deg << "," << u.spread.xy_std_m << "," << u.spread.phi_std_deg << "," << u.ambiguous << "," << u.particles << ","
-                  << u.cpu_s << "," << u.distance_m << "\n";
+                  << u.cpu_s << "," << u.distance_m << "," << u.fit_fraction << "," << u.scan_unexplained << "\n";
     }
   }
   writeFileAtomically((fs::path(out_dir) / "trials.csv").string(), trials_csv.str());

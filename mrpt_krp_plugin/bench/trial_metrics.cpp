@@ -17,6 +17,8 @@ UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& t
   r.error_phi_deg = std::abs(mrpt::math::wrapToPi(e.mean.phi - truth.phi)) * 180.0 / M_PI;
   r.spread = filterSpread(e.cov);
   r.ambiguous = e.ambiguous_with.has_value();
+  r.fit_fraction = e.fit_fraction;
+  r.scan_unexplained = e.scan_unexplained;
   r.particles = e.particles;
   r.cpu_s = e.cpu_s;
   r.distance_m = distance_m;

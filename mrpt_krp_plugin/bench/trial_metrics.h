@@ -15,8 +15,9 @@ struct ConvergenceCriteria {
   double max_error_xy_m = 0.5;       ///< mean within this of the truth [m]
   double max_error_phi_deg = 10.0;   ///< and within this heading [deg]
   /// The filter's reported spread below these reads as confident. Its covariance includes a
-  /// look-alike place the guard found (MclEstimate::ambiguous_with), so an ambiguous estimate is
-  /// not confident however tight its particles are.
+  /// look-alike place the guard found (MclEstimate::ambiguous_with) and is widened for a scan the
+  /// map explains too little of (MclEstimate::scan_unexplained), so such an estimate is not
+  /// confident however tight its particles are.
   ConcentrationThresholds confident;
 };
 
@@ -29,6 +30,8 @@ struct UpdateRecord {
   double error_phi_deg = 0.0;
   FilterSpread spread;       ///< of the filter's reported covariance
   bool ambiguous = false;    ///< the filter reported a look-alike place (MclEstimate::ambiguous_with)
+  double fit_fraction = -1.0;    ///< scan returns explained at the mean (MclEstimate::fit_fraction; -1: not measured)
+  bool scan_unexplained = false;  ///< the guard widened the covariance for too few explained returns
   std::size_t particles = 0;
   double cpu_s = 0.0;
   double distance_m = 0.0;   ///< true distance travelled up to this update [m]

@@ -21,4 +21,15 @@ bool isConcentrated(const FilterSpread& spread, const ConcentrationThresholds& t
   return spread.xy_std_m < thresholds.xy_std_m && spread.phi_std_deg < thresholds.phi_std_deg;
 }
 
+mrpt::math::CMatrixDouble33 covarianceWithSpreadAtLeast(const mrpt::math::CMatrixDouble33& cov, double xy_std_m,
+                                                        double phi_std_deg) {
+  // A diagonal entry never exceeds the block's largest eigenvalue, so raising the diagonal is enough.
+  auto wide = cov;
+  const double phi_std_rad = phi_std_deg * M_PI / 180.0;
+  wide(0, 0) = std::max(wide(0, 0), xy_std_m * xy_std_m);
+  wide(1, 1) = std::max(wide(1, 1), xy_std_m * xy_std_m);
+  wide(2, 2) = std::max(wide(2, 2), phi_std_rad * phi_std_rad);
+  return wide;
+}
+
 }  // namespace krp

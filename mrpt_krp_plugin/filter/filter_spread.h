@@ -23,4 +23,9 @@ struct ConcentrationThresholds {
 /// Both stds below their thresholds.
 bool isConcentrated(const FilterSpread& spread, const ConcentrationThresholds& thresholds);
 
+/// `cov` with its x, y and heading variances raised to at least these stds' squares (what is
+/// already wider stays), so that filterSpread reads at least `xy_std_m` and `phi_std_deg`.
+mrpt::math::CMatrixDouble33 covarianceWithSpreadAtLeast(const mrpt::math::CMatrixDouble33& cov, double xy_std_m,
+                                                        double phi_std_deg);
+
 }  // namespace krp

@@ -22,6 +22,11 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
   if (params_.recheck_every_updates < 0 || params_.remembered_rejected < 0)
     throw std::invalid_argument("LookAlikeGuard: recheck_every_updates and remembered_rejected must be 0 or more");
   if (params_.searches_per_update < 1) throw std::invalid_argument("LookAlikeGuard: searches_per_update must be at least 1");
+  if (!(params_.min_fit_fraction >= 0.0 && params_.min_fit_fraction <= 1.0))
+    throw std::invalid_argument("LookAlikeGuard: min_fit_fraction must be in [0, 1]");
+  if (isConcentrated({params_.unexplained_xy_std_m, params_.unexplained_phi_std_deg}, params_.converged))
+    throw std::invalid_argument("LookAlikeGuard: an unexplained scan's spread (unexplained_xy_std_m, "
+                                "unexplained_phi_std_deg) must not read as converged");
   validateRivalTestParams(params_.rival_test);  // refused here, not mid-run
 }
 

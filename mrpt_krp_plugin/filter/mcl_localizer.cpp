@@ -54,7 +54,6 @@ MclLocalizer::MclLocalizer(OwnMap map, std::shared_ptr<ParticleInitializer> init
   o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
   o.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
   o.BETA = 0.0;  // never resample inside executeOn: see the class comment
-  if (params_.kidnap.enabled) fit_scorer_ = std::make_unique<ScanFitScorer>(*map_);
 }
 
 void MclLocalizer::resampleSystematicIfNeeded() {
@@ -205,8 +204,17 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     e.ambiguous_with = rival_->rival();
     e.cov = covarianceWithLookAlike(cov, e.mean, rival_->rival());
   }
-  if (fit_scorer_ && scan) {
+  const bool fit_floor = guard_ && guard_->params().min_fit_fraction > 0.0 && converged_;
+  if (scan && (params_.kidnap.enabled || fit_floor)) {
+    if (!fit_scorer_) fit_scorer_ = std::make_unique<ScanFitScorer>(*map_);
     e.fit_fraction = fit_scorer_->score(*scan, e.mean).fit_fraction;
+  }
+  if (fit_floor && e.fit_fraction >= 0.0 && e.fit_fraction < guard_->params().min_fit_fraction) {
+    const auto& gp = guard_->params();
+    e.scan_unexplained = true;
+    e.cov = covarianceWithSpreadAtLeast(e.cov, gp.unexplained_xy_std_m, gp.unexplained_phi_std_deg);
+  }
+  if (params_.kidnap.enabled && e.fit_fraction >= 0.0) {
     e.kidnap_detected = kidnap_.update(e.fit_fraction);
     if (e.kidnap_detected) initialized_ = false;
   }

@@ -33,7 +33,12 @@ struct MclEstimate {
   mrpt::math::CMatrixDouble33 cov;
   std::size_t particles = 0;
   double cpu_s = 0.0;  ///< thread CPU time of this update (localization code only) [s]
-  double fit_fraction = -1.0;  ///< scan returns explained at the mean (kidnap detection on; else -1)
+  /// Scan returns explained at the mean (ScanFit); -1 when neither kidnap detection nor the
+  /// guard's fit floor needed it.
+  double fit_fraction = -1.0;
+  /// The filter has converged, but fewer of the scan's returns than the guard's
+  /// min_fit_fraction are explained at the mean: `cov` is widened so the pose reads unsettled.
+  bool scan_unexplained = false;
   bool initialized = false;    ///< the initializer ran at this update (the first, or after a kidnap)
   bool kidnap_detected = false;  ///< this update completed a kidnap: the next one re-initializes
   bool look_alike_found = false;  ///< the filter had converged and the guard moved particles to a look-alike place
@@ -102,7 +107,7 @@ class MclLocalizer {
   bool initialized_ = false;
   int initializations_ = 0;
   uint64_t resample_draws_ = 0;
-  std::unique_ptr<ScanFitScorer> fit_scorer_;  ///< only with kidnap detection
+  std::unique_ptr<ScanFitScorer> fit_scorer_;  ///< made when kidnap detection or the guard's fit floor first needs it
   KidnapDetector kidnap_;
   std::shared_ptr<const LookAlikeGuard> guard_;
   bool converged_ = false;              ///< the particles were concentrated at the last update

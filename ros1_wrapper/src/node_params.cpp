@@ -86,6 +86,7 @@ const std::map<std::string, Reader>& readers() {
       {"uniform_fraction", number(&NodeParams::uniform_fraction, 0.0, 0.99)},
       {"look_alike_guard", boolean(&NodeParams::look_alike_guard)},
       {"look_alike_ambiguity_margin", number(&NodeParams::look_alike_ambiguity_margin, 0.0, 1.0)},
+      {"look_alike_min_fit_fraction", number(&NodeParams::look_alike_min_fit_fraction, 0.0, 1.0)},
   };
   return r;
 }
@@ -158,6 +159,7 @@ KidnapDetectorParams NodeParams::kidnap() const {
 LookAlikeGuardParams NodeParams::lookAlikeGuard() const {
   LookAlikeGuardParams g;
   g.ambiguity_margin = look_alike_ambiguity_margin;
+  g.min_fit_fraction = look_alike_min_fit_fraction;
   return g;
 }
 

@@ -46,6 +46,9 @@ struct NodeParams {
   bool look_alike_guard = true;        ///< `track`: check the converged filter for a look-alike place (LookAlikeGuard)
   /// `track`: a look-alike scoring within this of the tracked pose makes it ambiguous [0..1]
   double look_alike_ambiguity_margin = LookAlikeGuardParams{}.ambiguity_margin;
+  /// `track`: a converged pose explaining fewer of the scan's returns than this is published
+  /// with a widened covariance and a warning (0 = off) [0..1]
+  double look_alike_min_fit_fraction = LookAlikeGuardParams{}.min_fit_fraction;
 
   // Derived library parameters.
   HypothesisSourceParams hypothesisSource() const;

@@ -419,6 +419,12 @@ void RelocalizerNode::track(TrackJob& job) {
       << ") fits the scan nearly as well; the published covariance covers both";
     report(s.str(), true);
   }
+  if (u->estimate.scan_unexplained) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(0) << "pose unsettled: only " << 100.0 * u->estimate.fit_fraction
+      << " % of the scan's returns are explained by the map (clutter?); the published covariance is widened";
+    report(s.str(), true);
+  }
   geometry_msgs::PoseArray cloud;
   cloud.header = header;
   const auto& pf = job.state->tracker->localizer().particles();

@@ -31,5 +31,22 @@ TEST(FilterSpread, ConcentratedNeedsBothPositionAndHeading) {
   EXPECT_TRUE(isConcentrated({0.6, 2.0}, {1.0, 10.0}));
 }
 
+TEST(FilterSpread, RaisedSpreadKeepsWhatIsAlreadyWider) {
+  mrpt::math::CMatrixDouble33 cov;
+  cov.setZero();
+  cov(0, 0) = 0.01;
+  cov(1, 1) = 4.0;  // 2 m along y: wider than asked
+  cov(0, 1) = cov(1, 0) = 0.005;
+  cov(2, 2) = std::pow(1.0 * M_PI / 180.0, 2);
+  const auto wide = covarianceWithSpreadAtLeast(cov, 1.0, 20.0);
+  EXPECT_DOUBLE_EQ(wide(0, 0), 1.0);
+  EXPECT_DOUBLE_EQ(wide(1, 1), 4.0);
+  EXPECT_DOUBLE_EQ(wide(0, 1), 0.005) << "the correlation is kept";
+  const auto s = filterSpread(wide);
+  EXPECT_GE(s.xy_std_m, 2.0);
+  EXPECT_NEAR(s.phi_std_deg, 20.0, 1e-9);
+  EXPECT_FALSE(isConcentrated(s, {}));
+}
+
 }  // namespace
 }  // namespace krp

@@ -202,6 +202,57 @@ TEST(LookAlikeGuard, AWrongPoseInACorridorIsNotReportedUnambiguous) {
   EXPECT_FALSE(confidentlyWrongAtTheEnd(LookAlikeGuardParams{}.searches_per_update));
 }
 
+// A filter that is right, on scans whose returns mostly hit pillars the map does not hold: the
+// particles stay tight, yet the scan cannot vouch for the pose. The guard reports it unsettled
+// (widened covariance) below its fit floor, and not on clean scans or with the floor off.
+TEST(LookAlikeGuard, ReportsAPoseTheScanMostlyFailsToExplainAsUnsettled) {
+  const auto room = std::make_shared<mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  const auto cluttered = test::asymmetricRoomWithPillarsAround(kTruth.x, kTruth.y, 6, 1.0, 0.4);
+  auto lastEstimate = [&](double min_fit_fraction, const mrpt::maps::COccupancyGridMap2D& scanned) {
+    auto params = withAmbiguityMargin(0.0);  // the twin plays no part here
+    params.min_fit_fraction = min_fit_fraction;
+    MclLocalizer loc(room, std::make_shared<OnePoseInitializer>(kTruth));
+    loc.setLookAlikeGuard(std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(*room), params));
+    MclEstimate e;
+    for (uint64_t i = 0; i < 3; ++i) {
+      RawlogStep step;
+      step.observations = mrpt::obs::CSensoryFrame::Create();
+      step.observations->insert(scanAtTruth(scanned, 30 + i));
+      e = loc.update(step);
+    }
+    return e;
+  };
+  const double floor = LookAlikeGuardParams{}.min_fit_fraction;
+  const auto blocked = lastEstimate(floor, cluttered);
+  EXPECT_LT(distance(blocked.mean, kTruth), 0.2) << "the particles stay on the truth";
+  EXPECT_LT(blocked.fit_fraction, floor);
+  EXPECT_GE(blocked.fit_fraction, 0.0);
+  EXPECT_TRUE(blocked.scan_unexplained);
+  EXPECT_FALSE(isConcentrated(filterSpread(blocked.cov), {}));
+
+  const auto unguarded = lastEstimate(0.0, cluttered);
+  EXPECT_FALSE(unguarded.scan_unexplained);
+  EXPECT_TRUE(isConcentrated(filterSpread(unguarded.cov), {})) << "without the floor the same filter reads confident";
+
+  const auto clean = lastEstimate(floor, *room);
+  EXPECT_GT(clean.fit_fraction, 0.9);
+  EXPECT_FALSE(clean.scan_unexplained);
+  EXPECT_TRUE(isConcentrated(filterSpread(clean.cov), {}));
+}
+
+TEST(LookAlikeGuard, RefusesAFitFloorOutsideZeroToOneOrASpreadThatReadsConverged) {
+  const auto matcher = std::make_shared<CorrelativeMatcher>(test::asymmetricRoom());
+  LookAlikeGuardParams p;
+  p.min_fit_fraction = 1.2;
+  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
+  p.min_fit_fraction = std::nan("");
+  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
+  p = {};
+  p.unexplained_xy_std_m = 0.1;
+  p.unexplained_phi_std_deg = 2.0;
+  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
+}
+
 TEST(LookAlikeGuard, RefusesNoSearchPerUpdate) {
   LookAlikeGuardParams p;
   p.searches_per_update = 0;

@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -12,12 +13,29 @@
 
 namespace krp::test {
 
-mrpt::maps::COccupancyGridMap2D asymmetricRoom(double w, double h, double res) {
+namespace {
+FloorPlan asymmetricRoomPlan(double w, double h, double res) {
   FloorPlan plan(w + 1.0, h + 1.0, res);
   plan.building(0.5, 0.5, 0.5 + w, 0.5 + h);
   plan.wall(0.5 + 0.3 * w, 0.5, 0.5 + 0.3 * w, 0.5 + 0.4 * h);
   plan.wall(0.5 + 0.3 * w, 0.5 + 0.4 * h, 0.5 + 0.45 * w, 0.5 + 0.4 * h);
   plan.solid(0.5 + 0.75 * w, 0.5 + 0.7 * h, 0.5 + 0.85 * w, 0.5 + 0.9 * h);
+  return plan;
+}
+}  // namespace
+
+mrpt::maps::COccupancyGridMap2D asymmetricRoom(double w, double h, double res) {
+  return asymmetricRoomPlan(w, h, res).toGrid();
+}
+
+mrpt::maps::COccupancyGridMap2D asymmetricRoomWithPillarsAround(double x, double y, int pillars, double radius_m,
+                                                               double pillar_m) {
+  auto plan = asymmetricRoomPlan(8.0, 6.0, 0.05);
+  for (int i = 0; i < pillars; ++i) {
+    const double a = 2.0 * M_PI * i / pillars;
+    const double cx = x + radius_m * std::cos(a), cy = y + radius_m * std::sin(a);
+    plan.solid(cx - 0.5 * pillar_m, cy - 0.5 * pillar_m, cx + 0.5 * pillar_m, cy + 0.5 * pillar_m);
+  }
   return plan.toGrid();
 }
 

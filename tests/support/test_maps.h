@@ -11,6 +11,11 @@ namespace krp::test {
 /// symmetry: a pose in it is unique from one scan.
 mrpt::maps::COccupancyGridMap2D asymmetricRoom(double width_m = 8.0, double height_m = 6.0, double resolution_m = 0.05);
 
+/// The default asymmetricRoom with `pillars` square pillars (side `pillar_m`) on a circle of
+/// `radius_m` around (x, y): clutter the map does not hold, hiding most walls from a lidar there.
+mrpt::maps::COccupancyGridMap2D asymmetricRoomWithPillarsAround(double x, double y, int pillars, double radius_m,
+                                                               double pillar_m);
+
 /// A fresh temporary folder for one test, removed when the test process exits
 /// (kept when the environment variable KRP_KEEP_TEST_DIRS is set).
 std::string tempDir(const std::string& name);
