@@ -276,7 +276,10 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
         "Confident: at the last update the largest xy std of the filter's reported covariance is below "
      << cfg.criteria.confident.xy_std_m << " m and its heading std below " << cfg.criteria.confident.phi_std_deg
      << " deg; for the methods with the look-alike guard that covariance is widened to cover a place that fits "
-        "the scan nearly as well (the filter reports itself ambiguous), so an ambiguous answer is not confident. "
+        "the scan nearly as well (the filter reports itself ambiguous), and widened when fewer than "
+     << formatNumber(100.0 * cfg.method_settings.guard.min_fit_fraction)
+     << " % of the scan's returns land on mapped walls at the mean (too much unmapped clutter to vouch for "
+        "the pose), so such an answer is not confident. "
         "Confident-wrong: confident, yet the mean is outside tolerance; confident-right: confident and within it "
         "(the share of trials where the method both is right and says so). Medians of updates, distance, CPU and particle-updates are over "
         "converged trials. Ratios are against uniform-mcl in this same run.\n\n"
