@@ -66,7 +66,9 @@ TEST(Landmarks, YamlRoundTripAndBadFiles) {
   test::writeText(dir + "/nan.yaml", "keypoints_per_zone: 3\nzones:\n  - zone: a\n    points: [[0,0],[.nan,0],[1,1]]\n");
   for (const char* f : {"short.yaml", "key.yaml", "nan.yaml", "missing.yaml"})
     EXPECT_THROW(readLandmarksYaml(dir + "/" + f), InputError) << f;
-  EXPECT_THROW(extractLandmarks(room, {z}, LandmarkParams{2}), InputError);
+  LandmarkParams too_few;
+  too_few.keypoints_per_zone = 2;
+  EXPECT_THROW(extractLandmarks(room, {z}, too_few), InputError);
 }
 
 }  // namespace
