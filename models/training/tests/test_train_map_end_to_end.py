@@ -68,3 +68,27 @@ def test_existing_output_survives_a_failed_run(tmp_path, bin_dir):
         pass
     assert (out / "keep.txt").read_text() == "previous models"
 
+
+
+def test_a_map_file_without_zones_is_zoned_and_trained(tmp_path, bin_dir):
+    """A new user's path: a map file only (no world, no zones), so the zones are made automatically."""
+    map_file = train_map.REPO_ROOT / "sim_worlds" / "office_two_zone" / "office_two_zone.yaml"
+    out = tmp_path / "my_floor"
+    rc = train_map.main(["--map", str(map_file), "--out", str(out), "--work-dir", str(tmp_path / "work"),
+                         "--samples-per-zone", "6", "--changed-per-zone", "2", "--classifier-epochs", "1",
+                         "--keypoint-epochs", "1", "--bin-dir", str(bin_dir), "--device", "cpu"])
+    assert rc == 0
+    m = json.loads((out / "manifest.json").read_text())
+    assert m["map"]["file"] == "office_two_zone.yaml"
+    assert m["lidar"]["name"] == "omni_12m"  # the default for --map
+    assert len(m["zones"]) >= 2 and all(z.startswith("zone_") for z in m["zones"]), m["zones"]
+    assert len(m["landmarks"]["zones"]) == len(m["zones"])
+    zones_yaml = (out / "zones.yaml").read_text()
+    assert all(z in zones_yaml for z in m["zones"])
+    assert "krp-train-map --map" in m["training"]["command"]
+    cls = ort.InferenceSession(str(out / "zone_classifier.onnx"))
+    p = cls.run(None, {"occupancy": np.zeros((1, 1, 160, 160), np.float32)})[0]
+    assert p.shape == (1, len(m["zones"]))
+    res = subprocess.run([str(bin_dir / "krp-infer"), "--models", str(out), "--latency", "1"], capture_output=True,
+                         text=True)
+    assert res.returncode == 0, res.stderr
