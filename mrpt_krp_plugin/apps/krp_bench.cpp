@@ -51,6 +51,8 @@ static int run(int argc, char** argv) {
                 {"seeded-min-particles", "N", "seeded: fewest particles in all, uniform share included",
                  std::to_string(krp::SeededInitParams{}.min_particles)},
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
+                {"top-turns", "N", "seeded, wall-aligned models: submap turns the keypoint model runs on (the "
+                 "classifier's surest)", std::to_string(krp::RelocalizerParams{}.top_turns)},
                 {"search-zones", "N", "seeded: when the keypoints give no credible pose, the correlative matcher "
                  "searches this many of the classifier's most likely zones (0 = no zone search)", "1"},
                 {"guard-ambiguity-margin", "S", "methods with the look-alike guard: a place scoring within this of the "
@@ -92,6 +94,8 @@ static int run(int argc, char** argv) {
   cfg.method_settings.seeded.particles_per_hypothesis = static_cast<size_t>(args.integer("seeded-particles-per-hypothesis"));
   cfg.method_settings.seeded.min_particles = static_cast<size_t>(args.integer("seeded-min-particles"));
   cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integer("top-zones"));
+  if (args.integer("top-turns") < 1 || args.integer("top-turns") > 4) throw krp::InputError("--top-turns", "must be 1 to 4");
+  cfg.method_settings.relocalizer.top_turns = static_cast<int>(args.integer("top-turns"));
   const auto search_zones = args.integer("search-zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
   cfg.method_settings.relocalizer.zone_search.zones = static_cast<int>(search_zones);
