@@ -94,8 +94,9 @@ static int run(int argc, char** argv) {
   cfg.method_settings.seeded.particles_per_hypothesis = static_cast<size_t>(args.integer("seeded-particles-per-hypothesis"));
   cfg.method_settings.seeded.min_particles = static_cast<size_t>(args.integer("seeded-min-particles"));
   cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integer("top-zones"));
-  if (args.integer("top-turns") < 1 || args.integer("top-turns") > 4) throw krp::InputError("--top-turns", "must be 1 to 4");
-  cfg.method_settings.relocalizer.top_turns = static_cast<int>(args.integer("top-turns"));
+  const auto top_turns = args.integer("top-turns");
+  if (top_turns < 1 || top_turns > 4) throw krp::InputError("--top-turns", "must be 1 to 4");
+  cfg.method_settings.relocalizer.top_turns = static_cast<int>(top_turns);
   const auto search_zones = args.integer("search-zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
   cfg.method_settings.relocalizer.zone_search.zones = static_cast<int>(search_zones);

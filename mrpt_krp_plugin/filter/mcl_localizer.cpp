@@ -54,6 +54,13 @@ MclLocalizer::MclLocalizer(OwnMap map, std::shared_ptr<ParticleInitializer> init
   o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
   o.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
   o.BETA = 0.0;  // never resample inside executeOn: see the class comment
+  if (params_.kidnap.enabled) fit_scorer_ = std::make_unique<ScanFitScorer>(*map_);
+}
+
+void MclLocalizer::setLookAlikeGuard(std::shared_ptr<const LookAlikeGuard> guard) {
+  guard_ = std::move(guard);
+  if (guard_ && guard_->params().min_fit_fraction > 0.0 && !fit_scorer_)
+    fit_scorer_ = std::make_unique<ScanFitScorer>(*map_);
 }
 
 void MclLocalizer::resampleSystematicIfNeeded() {
@@ -205,10 +212,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     e.cov = covarianceWithLookAlike(cov, e.mean, rival_->rival());
   }
   const bool fit_floor = guard_ && guard_->params().min_fit_fraction > 0.0 && converged_;
-  if (scan && (params_.kidnap.enabled || fit_floor)) {
-    if (!fit_scorer_) fit_scorer_ = std::make_unique<ScanFitScorer>(*map_);
-    e.fit_fraction = fit_scorer_->score(*scan, e.mean).fit_fraction;
-  }
+  if (scan && (params_.kidnap.enabled || fit_floor)) e.fit_fraction = fit_scorer_->score(*scan, e.mean).fit_fraction;
   if (fit_floor && e.fit_fraction >= 0.0 && e.fit_fraction < guard_->params().min_fit_fraction) {
     const auto& gp = guard_->params();
     e.scan_unexplained = true;

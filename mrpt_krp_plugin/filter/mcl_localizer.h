@@ -70,7 +70,7 @@ class MclLocalizer {
   MclEstimate update(const RawlogStep& step);
 
   /// Checks the converged filter for a look-alike place (LookAlikeGuard); null: no check.
-  void setLookAlikeGuard(std::shared_ptr<const LookAlikeGuard> guard) { guard_ = std::move(guard); }
+  void setLookAlikeGuard(std::shared_ptr<const LookAlikeGuard> guard);
 
   /// The next update runs the initializer again (a user asked to relocalize).
   void reinitialize() { initialized_ = false; }
@@ -107,7 +107,9 @@ class MclLocalizer {
   bool initialized_ = false;
   int initializations_ = 0;
   uint64_t resample_draws_ = 0;
-  std::unique_ptr<ScanFitScorer> fit_scorer_;  ///< made when kidnap detection or the guard's fit floor first needs it
+  /// Made with the filter when kidnap detection is on, or with a guard that has a fit floor: its
+  /// distance field is map preparation, not charged to an update.
+  std::unique_ptr<ScanFitScorer> fit_scorer_;
   KidnapDetector kidnap_;
   std::shared_ptr<const LookAlikeGuard> guard_;
   bool converged_ = false;              ///< the particles were concentrated at the last update

@@ -4,7 +4,6 @@
 // which decompresses them again. The three bags are timed in turn, repetition after
 // repetition, so that a busy machine slows them alike.
 //   krp_ros_bag_read_bench WORLD.yaml STEPS REPETITIONS OUT_DIR
-#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>

@@ -40,8 +40,8 @@ TEST(RosBagReader, GivesTheTrialsScansAndOdometryBack) {
   EXPECT_EQ(scan->getScanSize(), t.scans[2]->getScanSize());
 }
 
-// A robot's bag may be recorded with `rosbag record --bz2` or `--lz4`: the framing check leaves
-// compressed chunks to rosbag, and the same scans and odometry come out.
+// A robot's bag may be recorded with `rosbag record --bz2` or `--lz4`: the framing check
+// decompresses their chunks to check them, and the same scans and odometry come out.
 TEST(RosBagReader, CompressedBagsGiveTheSameSteps) {
   const Trial t = smallTrial();
   const std::string dir = krp::test::tempDir("bag_reader_compressed");

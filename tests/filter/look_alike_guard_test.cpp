@@ -37,6 +37,14 @@ mrpt::obs::CObservation2DRangeScan::Ptr scanAtTruth(const mrpt::maps::COccupancy
 
 double distance(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
+/// A filter step holding `scan` and no odometry (the robot stands still).
+RawlogStep stepWithScan(mrpt::obs::CObservation2DRangeScan::Ptr scan) {
+  RawlogStep step;
+  step.observations = mrpt::obs::CSensoryFrame::Create();
+  step.observations->insert(std::move(scan));
+  return step;
+}
+
 LookAlikeGuardParams withAmbiguityMargin(double margin) {
   LookAlikeGuardParams p;
   p.ambiguity_margin = margin;
@@ -110,10 +118,7 @@ TEST(LookAlikeGuard, MovesAFilterCollapsedOnTheTwinToTheTruth) {
     MclEstimate e;
     int found = 0;
     for (uint64_t i = 0; i < 6; ++i) {
-      RawlogStep step;
-      step.observations = mrpt::obs::CSensoryFrame::Create();
-      step.observations->insert(scanAtTruth(*room, 10 + i));
-      e = loc.update(step);
+      e = loc.update(stepWithScan(scanAtTruth(*room, 10 + i)));
       found += e.look_alike_found;
     }
     return std::make_pair(e, found);
@@ -139,10 +144,7 @@ TEST(LookAlikeGuard, ReportsARightFilterAsAmbiguousUntilTheScansTellTheTwinApart
     MclEstimate e;
     *ambiguous_updates = 0;
     for (uint64_t i = 0; i < 3; ++i) {
-      RawlogStep step;
-      step.observations = mrpt::obs::CSensoryFrame::Create();
-      step.observations->insert(scanAtTruth(*room, 20 + i));
-      e = loc.update(step);
+      e = loc.update(stepWithScan(scanAtTruth(*room, 20 + i)));
       EXPECT_FALSE(e.look_alike_found) << "the twin fits worse: no particle moves";
       *ambiguous_updates += e.ambiguous_with.has_value();
     }
@@ -215,10 +217,7 @@ TEST(LookAlikeGuard, ReportsAPoseTheScanMostlyFailsToExplainAsUnsettled) {
     loc.setLookAlikeGuard(std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(*room), params));
     MclEstimate e;
     for (uint64_t i = 0; i < 3; ++i) {
-      RawlogStep step;
-      step.observations = mrpt::obs::CSensoryFrame::Create();
-      step.observations->insert(scanAtTruth(scanned, 30 + i));
-      e = loc.update(step);
+      e = loc.update(stepWithScan(scanAtTruth(scanned, 30 + i)));
     }
     return e;
   };
