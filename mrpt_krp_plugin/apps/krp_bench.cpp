@@ -61,6 +61,9 @@ static int run(int argc, char** argv) {
                 {"guard-min-fit-fraction", "F", "methods with the look-alike guard: a converged estimate explaining fewer "
                  "than this share of the scan's returns is reported unsettled, so not confident (0 = off)",
                  krp::formatNumber(krp::LookAlikeGuardParams{}.min_fit_fraction)},
+                {"min-localized-fit", "F", "relocalizing methods: the first scan's best hypothesis must explain at least "
+                 "this share of its returns to be called localized (0 = off)",
+                 krp::formatNumber(krp::HypothesisRankingParams{}.min_localized_fit_fraction)},
                 {"calibration", "FILE", "relocalizing methods: a confidence calibration (--fit-calibration's output) "
                  "applied before the 'localized' threshold", ""},
                 {"fit-calibration", "FILE", "fit a confidence calibration on this run's first-scan answers (one world, "
@@ -106,6 +109,8 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.min_fit_fraction = args.number("guard-min-fit-fraction");
   if (!(cfg.method_settings.guard.min_fit_fraction >= 0.0 && cfg.method_settings.guard.min_fit_fraction <= 1.0))
     throw krp::InputError("--guard-min-fit-fraction", "must be in [0, 1]");
+  krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,
+                                  cfg.method_settings.matcher);
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");
   if (!calibration.empty()) {
     if (!fit_calibration.empty())

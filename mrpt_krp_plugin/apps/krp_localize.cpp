@@ -12,6 +12,7 @@
 #include "cli_args.h"
 #include "mrpt_krp_plugin/bench/method_registry.h"
 #include "mrpt_krp_plugin/bench/reliability.h"
+#include "mrpt_krp_plugin/bench/report_format.h"
 #include "mrpt_krp_plugin/bench/single_scan_sweep.h"
 #include "mrpt_krp_plugin/bench/trial_metrics.h"
 #include "mrpt_krp_plugin/common/atomic_file.h"
@@ -38,7 +39,7 @@ constexpr char kSection[] = "localize";
 const std::set<std::string> kIniKeys = {"map", "rawlog", "bag", "carmen", "carmen_fov_deg", "truth_from_log", "scan_topic",
                                         "odom_frame", "base_frame", "method", "ground_truth", "out_dir", "seed",
                                         "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min",
-                                        "models", "zones", "calibration", "single_scan", "single_scan_stride", "top_zones", "search_zones",
+                                        "models", "zones", "calibration", "min_localized_fit", "single_scan", "single_scan_stride", "top_zones", "search_zones",
                                         "seeded_uniform_fraction"};
 
 std::string flagName(std::string key) {
@@ -209,6 +210,9 @@ static int run(int argc, char** argv) {
                  "classifier's most likely zone is searched by the correlative matcher", ""},
                 {"calibration", "FILE", "seeded / global-matcher: the map's confidence calibration (krp-bench "
                  "--fit-calibration), applied before the 'localized' threshold", ""},
+                {"min-localized-fit", "F", "seeded / global-matcher: a scan's best hypothesis must explain at least "
+                 "this share of its returns to be called localized (0 = off)",
+                 krp::formatNumber(krp::HypothesisRankingParams{}.min_localized_fit_fraction)},
                 {"single-scan", "STEP|all", "relocalize from this step's scan only: print the hypotheses, write "
                  "hypotheses.json and hypotheses.png; 'all': every scan on its own, written as single_scan.csv/.png "
                  "with counts against the ground truth (-1 = run the filter). Uses --models, or the global matcher "
@@ -243,6 +247,7 @@ static int run(int argc, char** argv) {
   const auto search_zones = toNumber(s, "search_zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
   ms.relocalizer.zone_search.zones = static_cast<int>(search_zones);
+  krp::useMinLocalizedFitFraction(toNumber(s, "min_localized_fit"), ms.relocalizer, ms.matcher);
   if (!s["calibration"].empty())
     krp::useConfidenceCalibration(krp::readConfidenceCalibration(s["calibration"]), ms.relocalizer, ms.matcher);
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");

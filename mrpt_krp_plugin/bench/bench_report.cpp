@@ -176,7 +176,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
   trials_csv << "world,lidar,method,trial,trial_seed,filter_seed,converged,updates_to_convergence,"
                 "distance_to_convergence_m,cpu_to_convergence_s,initial_particles,mean_particles,"
                 "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,confident_and_right,total_cpu_s,"
-                "seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,seed_cpu_s,kidnap_step,kidnap_tracking_before,"
+                "seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,seed_best_fit_fraction,seed_cpu_s,kidnap_step,kidnap_tracking_before,"
                 "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s\n";
   updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s,"
                  "distance_m,fit_fraction,scan_unexplained\n";
@@ -188,7 +188,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                << o.mean_particles << "," << o.particle_updates_to_convergence << "," << o.final_error_xy_m << ","
                << o.final_error_phi_deg << "," << o.confident_but_wrong << "," << o.confident_and_right << "," << o.total_cpu_s << "," << r.seed_hypotheses
                << "," << r.seed_localized << "," << r.seed_best_error_xy_m << "," << r.seed_best_confidence << ","
-               << r.seed_best_from_matcher << "," << r.seed_cpu_s << "," << r.kidnap_step << ","
+               << r.seed_best_from_matcher << "," << r.seed_best_fit_fraction << "," << r.seed_cpu_s << "," << r.kidnap_step << ","
                << r.kidnap.tracking_before << "," << r.kidnap.updates_to_detect << "," << r.kidnap.recovered << ","
                << r.kidnap.updates_to_recover << "," << r.kidnap.cpu_to_recover_s << "\n";
     for (size_t i = 0; i < r.updates.size(); ++i) {

@@ -157,6 +157,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
             const auto& best = ranking.hypotheses.front().pose;
             rec.seed_best_confidence = ranking.hypotheses.front().confidence;
             rec.seed_best_from_matcher = ranking.hypotheses.front().origin == PoseOrigin::kMatcher;
+            rec.seed_best_fit_fraction = ranking.hypotheses.front().fit_fraction;
             const auto& truth = trial.truth[last_initialization];
             rec.seed_best_error_xy_m = std::hypot(best.x - truth.x, best.y - truth.y);
           }

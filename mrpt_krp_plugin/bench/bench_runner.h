@@ -45,6 +45,7 @@ struct TrialRecord {
   double seed_best_error_xy_m = -1.0;  ///< its best hypothesis's distance to the truth [m]; -1 without one
   double seed_best_confidence = -1.0;  ///< the confidence it gave its best hypothesis; -1 without one
   bool seed_best_from_matcher = false;  ///< its best came from a correlative search (seeded: the zone search)
+  double seed_best_fit_fraction = -1.0;  ///< share of that scan's returns its best explains (ScanFit); -1 without one
   double seed_cpu_s = -1.0;        ///< thread CPU from that scan to the drawn prior [s]; -1 without one
   int kidnap_step = -1;            ///< the update the robot was carried before; -1 without a kidnap
   KidnapOutcome kidnap;            ///< valid when kidnap_step >= 0

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+
+#include "mrpt_krp_plugin/common/input_error.h"
 
 namespace krp {
 
@@ -15,6 +18,19 @@ bool samePlace(const PoseHypothesis& a, const PoseHypothesis& b, const Hypothesi
          std::abs(mrpt::math::wrapToPi(a.pose.phi - b.pose.phi)) < p.merge_angle_deg * M_PI / 180.0;
 }
 }  // namespace
+
+void validate(const HypothesisRankingParams& p) {
+  const auto fraction = [](double v, const char* name) {
+    if (!(v >= 0.0 && v <= 1.0))
+      throw InputError(std::string("hypothesis ranking: ") + name, "must be in [0, 1], got " + std::to_string(v));
+  };
+  fraction(p.null_fit_fraction, "null_fit_fraction");
+  fraction(p.min_fit_fraction, "min_fit_fraction");
+  fraction(p.min_confidence, "min_confidence");
+  fraction(p.min_localized_fit_fraction, "min_localized_fit_fraction");
+  if (!(p.fit_sharpness > 0.0)) throw InputError("hypothesis ranking: fit_sharpness", "must be > 0");
+  if (p.max_hypotheses < 1) throw InputError("hypothesis ranking: max_hypotheses", "must be >= 1");
+}
 
 Ranking rankHypotheses(std::vector<PoseHypothesis> candidates, const HypothesisRankingParams& params) {
   Ranking r;
@@ -49,6 +65,9 @@ Ranking rankHypotheses(std::vector<PoseHypothesis> candidates, const HypothesisR
   } else if (r.hypotheses.front().confidence < params.min_confidence) {
     why << "ambiguous: best confidence " << r.hypotheses.front().confidence << " < " << params.min_confidence
         << " (" << r.hypotheses.size() << " distinct hypotheses)";
+  } else if (r.hypotheses.front().fit_fraction < params.min_localized_fit_fraction) {
+    why << "scan largely unexplained: the best pose explains " << r.hypotheses.front().fit_fraction
+        << " of its returns < " << params.min_localized_fit_fraction << " (clutter or a changed map: one scan cannot vouch for it)";
   }
   r.reason = why.str();
   r.localized = r.reason.empty();

@@ -12,6 +12,11 @@ void useConfidenceCalibration(const ConfidenceCalibration& calibration, Relocali
   matcher.verifier.ranking.calibration = calibration;
 }
 
+void useMinLocalizedFitFraction(double fraction, RelocalizerParams& learned, MatcherRelocalizerParams& matcher) {
+  learned.verifier.ranking.min_localized_fit_fraction = fraction;
+  matcher.verifier.ranking.min_localized_fit_fraction = fraction;
+}
+
 std::vector<std::string> hypothesisSourceBackends() { return {"learned", "global-matcher"}; }
 
 HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,

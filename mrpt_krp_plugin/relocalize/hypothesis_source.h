@@ -37,6 +37,9 @@ struct HypothesisSourceParams {
 void useConfidenceCalibration(const ConfidenceCalibration& calibration, RelocalizerParams& learned,
                               MatcherRelocalizerParams& matcher);
 
+/// Sets the ranking's min_localized_fit_fraction in both backends' parameters.
+void useMinLocalizedFitFraction(double fraction, RelocalizerParams& learned, MatcherRelocalizerParams& matcher);
+
 /// The backend names accepted by makeHypothesisSource, in a stable order.
 std::vector<std::string> hypothesisSourceBackends();
 

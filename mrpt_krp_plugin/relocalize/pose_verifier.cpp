@@ -4,7 +4,9 @@
 namespace krp {
 
 PoseVerifier::PoseVerifier(const mrpt::maps::COccupancyGridMap2D& map, PoseVerifierParams params)
-    : params_(params), scorer_(map, params.fit), icp_(map, params.icp) {}
+    : params_(params), scorer_(map, params.fit), icp_(map, params.icp) {
+  validate(params_.ranking);
+}
 
 Ranking PoseVerifier::verify(const mrpt::obs::CObservation2DRangeScan& scan,
                              std::vector<PoseHypothesis> candidates) const {

@@ -72,6 +72,7 @@ const std::map<std::string, Reader>& readers() {
       {"models_dir", string(&NodeParams::models_dir)},
       {"zones_file", string(&NodeParams::zones_file)},
       {"calibration_file", string(&NodeParams::calibration_file)},
+      {"min_localized_fit_fraction", number(&NodeParams::min_localized_fit_fraction, 0.0, 1.0)},
       {"cross_check", boolean(&NodeParams::cross_check)},
       {"relocalize_on_startup", boolean(&NodeParams::relocalize_on_startup)},
       {"relocalize_on_kidnap", boolean(&NodeParams::relocalize_on_kidnap)},
@@ -131,6 +132,7 @@ HypothesisSourceParams NodeParams::hypothesisSource() const {
   h.models_dir = models_dir;
   h.zones_file = zones_file;
   h.learned.cross_check.enabled = cross_check;
+  useMinLocalizedFitFraction(min_localized_fit_fraction, h.learned, h.matcher);
   if (!calibration_file.empty()) useConfidenceCalibration(readConfidenceCalibration(calibration_file), h.learned, h.matcher);
   return h;
 }

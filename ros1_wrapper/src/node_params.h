@@ -29,6 +29,9 @@ struct NodeParams {
   std::string models_dir;                  ///< the models of this map (krp-train-map's output)
   std::string zones_file;                  ///< `learned`: their zones.yaml, enables the zone search (optional)
   std::string calibration_file;            ///< the map's confidence calibration (krp-bench --fit-calibration; optional)
+  /// A relocalization whose best pose explains fewer of the scan's returns than this is "not
+  /// localized" (HypothesisRankingParams::min_localized_fit_fraction; 0 = off) [0..1]
+  double min_localized_fit_fraction = HypothesisRankingParams{}.min_localized_fit_fraction;
   bool cross_check = true;                 ///< `learned`: check the best answer for look-alike places (CrossCheckParams)
   bool relocalize_on_startup = true;       ///< relocalize from the first scan
   bool relocalize_on_kidnap = false;       ///< relocalize when the tracked pose stops fitting the scans

@@ -33,6 +33,7 @@ TEST(ConfidenceCalibration, RankingAppliesItBeforeTheLocalizedThreshold) {
   PoseHypothesis h;
   h.fit_fraction = 0.7;  // raw confidence sigmoid(25 * 0.1) = 0.92: localized by default
   HypothesisRankingParams params;
+  params.min_localized_fit_fraction = 0.0;  // the confidence threshold alone decides here
   const auto raw = rankHypotheses({h}, params);
   ASSERT_TRUE(raw.localized);
   params.calibration.slope = 1.0;

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/relocalize/hypothesis_ranking.h"
 
 namespace krp {
@@ -33,6 +36,29 @@ TEST(HypothesisRanking, MergesDuplicatesKeepingTheBetterFit) {
   ASSERT_EQ(r.hypotheses.size(), 2u);  // the third is turned by about 55 deg: another hypothesis
   EXPECT_DOUBLE_EQ(r.hypotheses[0].fit_fraction, 0.9);
   EXPECT_DOUBLE_EQ(r.hypotheses[0].pose.x, 1.1);
+}
+
+TEST(HypothesisRanking, AScanLargelyUnexplainedIsNotLocalizedEvenByALoneHypothesis) {
+  const auto r = rankHypotheses({at(1, 2, 0, 0.85)});
+  ASSERT_EQ(r.hypotheses.size(), 1u);
+  EXPECT_GT(r.hypotheses[0].confidence, 0.99) << "no rival place: the softmax alone would say localized";
+  EXPECT_FALSE(r.localized);
+  EXPECT_NE(r.reason.find("unexplained"), std::string::npos) << r.reason;
+  HypothesisRankingParams off;
+  off.min_localized_fit_fraction = 0.0;
+  EXPECT_TRUE(rankHypotheses({at(1, 2, 0, 0.85)}, off).localized);
+}
+
+TEST(HypothesisRanking, RefusesParametersOutOfRange) {
+  EXPECT_NO_THROW(validate(HypothesisRankingParams{}));
+  for (double bad : {-0.1, 1.5, std::nan("")}) {
+    HypothesisRankingParams p;
+    p.min_localized_fit_fraction = bad;
+    EXPECT_THROW(validate(p), InputError) << bad;
+  }
+  HypothesisRankingParams p;
+  p.fit_sharpness = 0.0;
+  EXPECT_THROW(validate(p), InputError);
 }
 
 TEST(HypothesisRanking, PoorFitsAreNotLocalized) {
