@@ -44,6 +44,8 @@ static int run(int argc, char** argv) {
                 {"kld-min", "N", "amcl-kld: min particles (amcl default)", "100"},
                 {"kld-high-max", "N", "amcl-kld-50k: max particles", "50000"},
                 {"models-root", "DIR", "seeded methods: models of world W in DIR/W (krp-train-map's output)", "models"},
+                {"models-for", "W=DIR,...", "seeded methods: world W reads its models from DIR instead (a changed "
+                 "world run with the models of the map it changes)", ""},
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"seeded-max-particles", "N", "seeded: particle cap", "5000"},
                 {"seeded-particles-per-hypothesis", "N", "seeded: particles around each hypothesis, before the "
@@ -90,6 +92,12 @@ static int run(int argc, char** argv) {
   cfg.method_settings.amcl.min_particles = static_cast<size_t>(args.integer("kld-min"));
   cfg.method_settings.amcl_high_max_particles = static_cast<size_t>(args.integer("kld-high-max"));
   cfg.method_settings.models_root = args.get("models-root");
+  for (const auto& pair : args.list("models-for")) {
+    const auto eq = pair.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == pair.size())
+      throw krp::InputError("--models-for", "expected WORLD=DIR, got '" + pair + "'");
+    cfg.method_settings.models_by_world[pair.substr(0, eq)] = pair.substr(eq + 1);
+  }
   cfg.method_settings.seeded.uniform_fraction = args.number("seeded-uniform-fraction");
   cfg.method_settings.seeded.max_particles = static_cast<size_t>(args.integer("seeded-max-particles"));
   for (const char* flag : {"seeded-max-particles", "seeded-particles-per-hypothesis", "seeded-min-particles"})

@@ -71,6 +71,11 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     MethodResources resources;
     std::vector<mrpt::math::TPoint2D> start_region;  ///< where trials start (empty: anywhere)
   };
+  for (const auto& named : cfg.method_settings.models_by_world) {  // a typo would silently use the default folder
+    const bool run = std::any_of(cfg.world_files.begin(), cfg.world_files.end(),
+                                 [&](const auto& f) { return readWorld(f).name == named.first; });
+    if (!run) throw InputError("models of world '" + named.first + "'", "no world of that name is run");
+  }
   std::vector<Job> jobs;
   for (size_t wi = 0; wi < cfg.world_files.size(); ++wi) {
     const World w = readWorld(cfg.world_files[wi]);
@@ -88,7 +93,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
       res.matcher = matcher;
       res.guard = guard;
       if (!seeded_methods.empty()) {
-        const auto models = modelsFolder(cfg.method_settings.models_root, w, lidars[li]);
+        const auto models = modelsFolder(cfg.method_settings.models_root, cfg.method_settings.models_by_world, w, lidars[li]);
         const auto zones = readZonesYaml(w.zones_path);
         for (const auto& m : seeded_methods) {
           const auto rp = relocalizerParamsFor(m, cfg.method_settings.relocalizer);

@@ -40,7 +40,14 @@ RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParam
 }
 bool methodNeedsMatcher(const std::string& name) { return name == "global-matcher" || name == kMatcherGuarded; }
 
-std::string modelsFolder(const std::string& root, const World& world, const std::string& lidar) {
+std::string modelsFolder(const std::string& root, const std::map<std::string, std::string>& by_world,
+                         const World& world, const std::string& lidar) {
+  if (const auto named = by_world.find(world.name); named != by_world.end()) {
+    if (!std::filesystem::exists(std::filesystem::path(named->second) / "manifest.json"))
+      throw InputError(named->second, "named as the models of world '" + world.name +
+                                          "' but holds no manifest.json (krp-train-map's output)");
+    return named->second;
+  }
   const std::string name = lidar == world.default_lidar_profile ? world.name : world.name + "_" + lidar;
   const auto folder = (std::filesystem::path(root) / name).string();
   if (!std::filesystem::exists(std::filesystem::path(folder) / "manifest.json"))

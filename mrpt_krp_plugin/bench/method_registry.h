@@ -25,6 +25,9 @@ struct MethodSettings {
   RelocalizerParams relocalizer;
   /// The seeded methods read their models from modelsFolder() under this (krp-train-map's output).
   std::string models_root = "models";
+  /// Worlds whose models are elsewhere, by world name: a changed world (clutter, an unseen wing)
+  /// run with the models of the map it changes.
+  std::map<std::string, std::string> models_by_world;
   MatcherRelocalizerParams matcher;
   LookAlikeGuardParams guard;  ///< the filter's check of each convergence (methodUsesLookAlikeGuard)
 };
@@ -65,8 +68,10 @@ bool methodNeedsMatcher(const std::string& name);
 
 /// Where the seeded methods find a world's models for a lidar: `<root>/<world>` for the world's
 /// default lidar, `<root>/<world>_<lidar>` for another (krp-train-map --world W --lidar L --out
-/// <root>/W_L). InputError naming the folder and the training command when it holds no models.
-std::string modelsFolder(const std::string& root, const World& world, const std::string& lidar);
+/// <root>/W_L), unless `by_world` names a folder for the world. InputError naming the folder
+/// (and the training command) when it holds no models.
+std::string modelsFolder(const std::string& root, const std::map<std::string, std::string>& by_world,
+                         const World& world, const std::string& lidar);
 
 /// A fresh initializer for a method; InputError listing the names for an unknown one, or for a
 /// method whose resources are missing.
