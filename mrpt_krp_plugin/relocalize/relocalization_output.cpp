@@ -44,7 +44,7 @@ nlohmann::json relocalizationJson(const RelocalizationResult& r, const std::vect
   j["detections"] = r.detections;
   j["candidates"] = r.candidates;
   j["zone_search"] = {{"used", r.zone_search_used}, {"candidates", r.zone_search_candidates}};
-  j["cross_check"] = {{"used", r.cross_check_used}, {"candidates", r.cross_check_candidates}};
+  j["cross_check"] = {{"used", r.cross_check_used}, {"candidates", r.cross_check_candidates}, {"rounds", r.cross_check_rounds}};
   j["hypotheses"] = nlohmann::json::array();
   for (const auto& h : r.ranking.hypotheses) {
     std::vector<double> cov;
@@ -75,7 +75,7 @@ std::string relocalizationText(const RelocalizationResult& r, const std::vector<
       << r.times.zone_search_ms << " ms\n";
   if (r.cross_check_used)
     o << "cross-check for look-alike places: " << r.cross_check_candidates << " other place(s) fit about as well, "
-      << r.times.cross_check_ms << " ms\n";
+      << r.cross_check_rounds << " round(s), " << r.times.cross_check_ms << " ms\n";
   for (size_t i = 0; i < r.ranking.hypotheses.size(); ++i) {
     const auto& h = r.ranking.hypotheses[i];
     o << "  #" << i + 1 << " x " << h.pose.x << " m, y " << h.pose.y << " m, yaw " << h.pose.phi * kRadToDeg

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/relocalize/relocalizer.h"
 
+#include <mrpt/math/wrap2pi.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -33,6 +35,12 @@ std::vector<int> topZones(const std::vector<float>& probs, int count) {
   return idx;
 }
 
+/// Within the ranking's merge distance and angle: what it would merge as one place.
+bool samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, const HypothesisRankingParams& p) {
+  return std::hypot(a.x - b.x, a.y - b.y) < p.merge_distance_m &&
+         std::abs(mrpt::math::wrapToPi(a.phi - b.phi)) < p.merge_angle_deg * M_PI / 180.0;
+}
+
 }  // namespace
 
 Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccupancyGridMap2D& map,
@@ -51,6 +59,8 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
       detector_(manifest_, params.onnx),
       verifier_(map, params.verifier) {
   requireTrainingMap(manifest_, map, params.training_map);
+  if (params_.cross_check.enabled && params_.cross_check.max_rounds < 1)
+    throw InputError("cross-check max_rounds", "must be 1 or more when the cross-check is on");
   if (params_.cross_check.enabled) matcher_.emplace(map, params_.matcher);
   if (given_zones)
     enableZoneSearch(map, *given_zones);
@@ -200,11 +210,17 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
                      (r.ranking.localized || params_.cross_check.when_not_localized);
   if (check) {
     t = Clock::now();
-    auto found = verifier_.refineAndScore(scan, crossCheck(scan, r.ranking));
     r.cross_check_used = true;
-    r.cross_check_candidates = static_cast<int>(found.size());
-    scored.insert(scored.end(), found.begin(), found.end());
-    r.ranking = verifier_.rank(std::move(scored));
+    for (int round = 0; round < params_.cross_check.max_rounds; ++round) {
+      const auto checked = r.ranking.hypotheses.front().pose;
+      auto found = verifier_.refineAndScore(scan, crossCheck(scan, r.ranking));
+      ++r.cross_check_rounds;
+      r.cross_check_candidates += static_cast<int>(found.size());
+      scored.insert(scored.end(), found.begin(), found.end());
+      r.ranking = verifier_.rank(scored);
+      if (found.empty() || r.ranking.hypotheses.empty() || samePlace(r.ranking.hypotheses.front().pose, checked, params_.verifier.ranking))
+        break;
+    }
     r.times.cross_check_ms = msSince(t);
   }
   r.times.total_ms = msSince(start);

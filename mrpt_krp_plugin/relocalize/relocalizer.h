@@ -50,6 +50,10 @@ struct CrossCheckParams {
   /// wing, it finds the mirror place there and the true one is never proposed. The whole-map
   /// search with the best's score as the bar finds the true place, which then outranks it.
   bool when_not_localized = true;
+  /// A place the check finds may outrank the answer; that new best has not been checked itself,
+  /// and its own look-alike may be the truth (a short-range scan in a room with a twin). The
+  /// check is repeated on each new best, up to this many checks in all.
+  int max_rounds = 3;
 };
 
 /// The outlines of the zones the models were trained on, in the manifest's order, picked by name
@@ -101,7 +105,8 @@ struct RelocalizationResult {
   bool zone_search_used = false;          ///< the keypoints gave no credible pose and the zone search ran
   int zone_search_candidates = 0;         ///< poses it proposed
   bool cross_check_used = false;          ///< the best answer was cross-checked for look-alike places
-  int cross_check_candidates = 0;         ///< other places the cross-check proposed
+  int cross_check_candidates = 0;         ///< other places the cross-check proposed, all rounds
+  int cross_check_rounds = 0;             ///< checks run: more than one when a check changed the best
   RelocalizationTimes times;
 };
 
