@@ -30,14 +30,19 @@ std::string ratio(double v, double ref) {
 
 
 /// Per method with a relocalizer: its best hypothesis's confidence against how often it was right.
-std::string reliabilitySections(const std::vector<TrialRecord>& records, double right_within_m) {
+std::string reliabilitySections(const std::vector<TrialRecord>& records, double right_within_m,
+                                const HypothesisRankingParams& ranking) {
   const auto groups = groupByWorldLidarMethod(records, [](const TrialRecord& r) { return r.seed_best_confidence >= 0; });
   if (groups.empty()) return "";
   std::ostringstream o;
   o << "Does the relocalizer's confidence mean what it says? Its best hypothesis's confidence, binned, against how "
        "often that hypothesis was within "
     << right_within_m << " m of the truth (calibrated: right about as often as the mean confidence says). It says "
-       "\"localized\" from 0.8.\n\n";
+       "\"localized\" from " << formatNumber(ranking.min_confidence);
+  if (ranking.min_localized_fit_fraction > 0)
+    o << " when its best pose also explains at least " << formatNumber(ranking.min_localized_fit_fraction)
+      << " of the scan's returns";
+  o << ".\n\n";
   for (const auto& g : groups) {
     std::vector<ConfidenceOutcome> answers;
     for (const auto* r : g) answers.push_back(firstScanAnswer(*r, right_within_m));
@@ -284,7 +289,8 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
         "(the share of trials where the method both is right and says so). Medians of updates, distance, CPU and particle-updates are over "
         "converged trials. Ratios are against uniform-mcl in this same run.\n\n"
      << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m)
-     << reliabilitySections(records, cfg.criteria.max_error_xy_m)
+     // krp-bench sets both relocalizers' rankings alike; the learned one's stands for both.
+     << reliabilitySections(records, cfg.criteria.max_error_xy_m, cfg.method_settings.relocalizer.verifier.ranking)
      << kidnapSection(summarizeKidnaps(records), cfg.kidnap_at_step);
   const auto scaling = scalingPoints(records);
   const std::string scaling_md = scalingSection(scaling, "scaling.png");
