@@ -71,14 +71,15 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     MethodResources resources;
     std::vector<mrpt::math::TPoint2D> start_region;  ///< where trials start (empty: anywhere)
   };
+  std::vector<World> worlds;
+  for (const auto& f : cfg.world_files) worlds.push_back(readWorld(f));
   for (const auto& named : cfg.method_settings.models_by_world) {  // a typo would silently use the default folder
-    const bool run = std::any_of(cfg.world_files.begin(), cfg.world_files.end(),
-                                 [&](const auto& f) { return readWorld(f).name == named.first; });
+    const bool run = std::any_of(worlds.begin(), worlds.end(), [&](const World& w) { return w.name == named.first; });
     if (!run) throw InputError("models of world '" + named.first + "'", "no world of that name is run");
   }
   std::vector<Job> jobs;
-  for (size_t wi = 0; wi < cfg.world_files.size(); ++wi) {
-    const World w = readWorld(cfg.world_files[wi]);
+  for (size_t wi = 0; wi < worlds.size(); ++wi) {
+    const World& w = worlds[wi];
     const auto map = loadOccupancyMap(w.map_path).grid;
     const auto filter_map = prepareSensorModelMap(*map, cfg.mcl.sensor);
     const auto start_region = trialStartRegion(w);

@@ -12,12 +12,10 @@
 
 namespace krp {
 
-namespace {
-bool samePlace(const PoseHypothesis& a, const PoseHypothesis& b, const HypothesisRankingParams& p) {
-  return std::hypot(a.pose.x - b.pose.x, a.pose.y - b.pose.y) < p.merge_distance_m &&
-         std::abs(mrpt::math::wrapToPi(a.pose.phi - b.pose.phi)) < p.merge_angle_deg * M_PI / 180.0;
+bool samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, const HypothesisRankingParams& p) {
+  return std::hypot(a.x - b.x, a.y - b.y) < p.merge_distance_m &&
+         std::abs(mrpt::math::wrapToPi(a.phi - b.phi)) < p.merge_angle_deg * M_PI / 180.0;
 }
-}  // namespace
 
 void validate(const HypothesisRankingParams& p) {
   const auto fraction = [](double v, const char* name) {
@@ -44,7 +42,7 @@ Ranking rankHypotheses(std::vector<PoseHypothesis> candidates, const HypothesisR
       continue;
     }
     const bool duplicate = std::any_of(r.hypotheses.begin(), r.hypotheses.end(),
-                                       [&](const auto& kept) { return samePlace(kept, c, params); });
+                                       [&](const auto& kept) { return samePlace(kept.pose, c.pose, params); });
     if (!duplicate) r.hypotheses.push_back(c);
   }
   // Softmax against the implicit "somewhere else": shift by the largest exponent for stability.

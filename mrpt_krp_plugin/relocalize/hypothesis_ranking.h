@@ -37,6 +37,9 @@ struct Ranking {
   std::string reason;  ///< why not localized (empty when localized)
 };
 
+/// Within the merge distance and angle: poses the ranking counts as one place.
+bool samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, const HypothesisRankingParams& params);
+
 /// InputError naming the first parameter out of its range.
 void validate(const HypothesisRankingParams& params);
 

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/relocalize/relocalizer.h"
 
-#include <mrpt/math/wrap2pi.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -33,12 +31,6 @@ std::vector<int> topZones(const std::vector<float>& probs, int count) {
   std::stable_sort(idx.begin(), idx.end(), [&](int a, int b) { return probs[a] > probs[b]; });
   idx.resize(std::min<size_t>(idx.size(), static_cast<size_t>(std::max(count, 0))));
   return idx;
-}
-
-/// Within the ranking's merge distance and angle: what it would merge as one place.
-bool samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, const HypothesisRankingParams& p) {
-  return std::hypot(a.x - b.x, a.y - b.y) < p.merge_distance_m &&
-         std::abs(mrpt::math::wrapToPi(a.phi - b.phi)) < p.merge_angle_deg * M_PI / 180.0;
 }
 
 }  // namespace
