@@ -80,6 +80,21 @@ std::vector<std::string> CliArgs::list(const std::string& name) const {
   return out;
 }
 
+std::vector<long long> CliArgs::integerList(const std::string& name) const {
+  std::vector<long long> out;
+  for (const auto& item : list(name)) {
+    size_t used = 0;
+    long long v = 0;
+    try {
+      v = std::stoll(item, &used);
+    } catch (const std::exception&) {
+    }
+    if (used == 0 || used != item.size()) throw InputError("--" + name, "'" + item + "' is not an integer");
+    out.push_back(v);
+  }
+  return out;
+}
+
 std::string CliArgs::usage() const {
   std::ostringstream o;
   o << "Usage: " << program_ << " [options]\n" << summary_ << "\n\nOptions:\n";

@@ -29,6 +29,7 @@ class CliArgs {
   double number(const std::string& name) const;
   long long integer(const std::string& name) const;
   std::vector<std::string> list(const std::string& name) const;  ///< comma-separated
+  std::vector<long long> integerList(const std::string& name) const;  ///< comma-separated integers
   std::string usage() const;
   std::string commandLine() const { return command_line_; }
 

@@ -32,6 +32,8 @@ static int run(int argc, char** argv) {
                 {"lidars", "A,B", "lidar profiles (default: each world's default)", ""},
                 {"methods", "A,B", "methods to compare", "uniform-mcl,amcl-kld"},
                 {"trials", "N", "trials per world and lidar", "10"},
+                {"only-trials", "I,J", "run only these trials (0-based, below --trials) with the seeds they have in "
+                 "the full run: replays one trial of a report", ""},
                 {"steps", "N", "motion steps per trial after the first scan", "40"},
                 {"kidnap-at", "STEP", "carry the robot elsewhere at this step (1..steps) and run every method with "
                  "kidnap detection; the report adds a kidnap table (0 = no kidnap)", "0"},
@@ -63,6 +65,8 @@ static int run(int argc, char** argv) {
                 {"guard-min-fit-fraction", "F", "methods with the look-alike guard: a converged estimate explaining fewer "
                  "than this share of the scan's returns is reported unsettled, so not confident (0 = off)",
                  krp::formatNumber(krp::LookAlikeGuardParams{}.min_fit_fraction)},
+                {"guard-forget-rejected", "", "methods with the look-alike guard: a look-alike the scans decided against "
+                 "is only left out of later searches, no longer watched (the guard before watching)", ""},
                 {"min-localized-fit", "F", "relocalizing methods: the first scan's best hypothesis must explain at least "
                  "this share of its returns to be called localized (0 = off)",
                  krp::formatNumber(krp::HypothesisRankingParams{}.min_localized_fit_fraction)},
@@ -79,6 +83,11 @@ static int run(int argc, char** argv) {
   cfg.lidars = args.list("lidars");
   cfg.methods = args.list("methods");
   cfg.trials = static_cast<int>(args.integer("trials"));
+  for (const auto t : args.integerList("only-trials")) {
+    if (t < 0 || t >= cfg.trials)
+      throw krp::InputError("--only-trials", std::to_string(t) + " is not one of the run's trials 0.." + std::to_string(cfg.trials - 1));
+    cfg.only_trials.push_back(static_cast<int>(t));
+  }
   cfg.trial.steps = static_cast<int>(args.integer("steps"));
   if (cfg.trials < 1 || cfg.trial.steps < 0) throw krp::InputError("--trials/--steps", "must be >= 1 / >= 0");
   cfg.kidnap_at_step = static_cast<int>(args.integer("kidnap-at"));
@@ -117,6 +126,7 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.min_fit_fraction = args.number("guard-min-fit-fraction");
   if (!(cfg.method_settings.guard.min_fit_fraction >= 0.0 && cfg.method_settings.guard.min_fit_fraction <= 1.0))
     throw krp::InputError("--guard-min-fit-fraction", "must be in [0, 1]");
+  cfg.method_settings.guard.watch_rejected = !args.flag("guard-forget-rejected");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,
                                   cfg.method_settings.matcher);
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");

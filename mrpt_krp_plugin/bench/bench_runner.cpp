@@ -71,6 +71,12 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     MethodResources resources;
     std::vector<mrpt::math::TPoint2D> start_region;  ///< where trials start (empty: anywhere)
   };
+  for (const int t : cfg.only_trials)
+    if (t < 0 || t >= cfg.trials)
+      throw InputError("trial " + std::to_string(t), "is not one of the run's trials 0.." + std::to_string(cfg.trials - 1));
+  std::vector<int> trial_indices = cfg.only_trials;
+  if (trial_indices.empty())
+    for (int t = 0; t < cfg.trials; ++t) trial_indices.push_back(t);
   std::vector<World> worlds;
   for (const auto& f : cfg.world_files) worlds.push_back(readWorld(f));
   for (const auto& named : cfg.method_settings.models_by_world) {  // a typo would silently use the default folder
@@ -109,13 +115,13 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     }
   }
   log << "krp-bench: base seed " << cfg.seed << "; " << jobs.size() << " world/lidar pair(s) x " << cfg.methods.size()
-      << " method(s) x " << cfg.trials << " trial(s)\n";
+      << " method(s) x " << trial_indices.size() << " trial(s)\n";
 
   std::vector<TrialRecord> out;
-  ProgressBar bar("bench", jobs.size() * static_cast<size_t>(cfg.trials) * cfg.methods.size(), log);
+  ProgressBar bar("bench", jobs.size() * trial_indices.size() * cfg.methods.size(), log);
   for (const auto& job : jobs) {
     const double free_m2 = freeAreaM2(*job.map);
-    for (int t = 0; t < cfg.trials; ++t) {
+    for (const int t : trial_indices) {
       const uint64_t trial_seed =
           deriveSeed(cfg.seed, job.world_index * kWorldStride + job.lidar_index * kLidarStride + static_cast<uint64_t>(t));
       const uint64_t filter_seed = deriveSeed(trial_seed, kFilterStream);

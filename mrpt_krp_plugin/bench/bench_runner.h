@@ -17,6 +17,9 @@ struct BenchConfig {
   std::vector<std::string> lidars;       ///< profile names; empty = each world's default
   std::vector<std::string> methods = {"uniform-mcl", "amcl-kld"};
   int trials = 10;
+  /// When not empty, only these trials (indices 0 .. trials - 1) are run, with the seeds they
+  /// have in the full run: one trial of a report replayed alone, to study it.
+  std::vector<int> only_trials;
   uint64_t seed = 1;
   TrialParams trial;
   MethodSettings method_settings;

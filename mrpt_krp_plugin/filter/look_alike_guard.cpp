@@ -28,6 +28,8 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
     throw std::invalid_argument("LookAlikeGuard: an unexplained scan's spread (unexplained_xy_std_m, "
                                 "unexplained_phi_std_deg) must not read as converged");
   validateRivalTestParams(params_.rival_test);  // refused here, not mid-run
+  if (!(params_.reopen_log_ratio < params_.rival_test.decisive_log_ratio))
+    throw std::invalid_argument("LookAlikeGuard: reopen_log_ratio must be below rival_test.decisive_log_ratio");
 }
 
 std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation2DRangeScan& scan,

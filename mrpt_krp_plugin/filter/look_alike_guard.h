@@ -61,6 +61,15 @@ struct LookAlikeGuardParams {
   /// Rivals decided against are left out of later searches while the filter stays converged; the
   /// oldest is forgotten beyond this many (their odometry-moved positions age).
   int remembered_rejected = 4;
+  /// Rivals decided against stay under watch: each scan's evidence keeps adding to their test,
+  /// whose lead for the tracked pose is held at rival_test.decisive_log_ratio, and one whose
+  /// lead falls to reopen_log_ratio is weighed as a rival again (the estimate turns ambiguous).
+  /// Two look-alikes can stay alike for metres and part only later, after the wrong one has won
+  /// the first scans. false: a rival decided against is only left out of searches.
+  bool watch_rejected = true;
+  /// [nats], below rival_test.decisive_log_ratio. 0: the scans since the decision have cancelled
+  /// the decisive lead it was rejected with.
+  double reopen_log_ratio = 0.0;
   double moved_share = 0.5;  ///< share of the particles moved to the look-alike place [0..1]
   double spread_m = 0.1;     ///< std of the moved particles around it, position [m]
   double spread_deg = 3.0;   ///< ... and heading [deg]

@@ -100,9 +100,36 @@ void MclLocalizer::moveShareOfParticlesTo(const mrpt::math::TPose2D& place) {
   }
 }
 
-void MclLocalizer::rememberRejected(const mrpt::math::TPose2D& place) {
-  rejected_.push_back(place);
+void MclLocalizer::rememberRejected(RivalTest test) {
+  test.holdLeadAt(guard_->params().rival_test.decisive_log_ratio);
+  rejected_.push_back(std::move(test));
   while (rejected_.size() > static_cast<size_t>(guard_->params().remembered_rejected)) rejected_.pop_front();
+}
+
+void MclLocalizer::watchRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
+                                 const mrpt::poses::CPose2D& increment) {
+  const auto& gp = guard_->params();
+  for (auto& test : rejected_) test.move(increment);
+  if (!gp.watch_rejected) return;
+  for (auto& test : rejected_) {
+    test.update(*map_, scan, mean);
+    test.holdLeadAt(gp.rival_test.decisive_log_ratio);
+  }
+  // Re-fitted scan after scan, a watched place along a corridor can slide onto the mean.
+  rejected_.erase(std::remove_if(rejected_.begin(), rejected_.end(),
+                                 [&](const RivalTest& t) { return guard_->samePlace(t.rival(), mean); }),
+                  rejected_.end());
+}
+
+bool MclLocalizer::reopenRejected() {
+  const auto& gp = guard_->params();
+  if (!gp.watch_rejected) return false;
+  const auto reopened = std::find_if(rejected_.begin(), rejected_.end(),
+                                     [&](const RivalTest& t) { return t.logRatio() <= gp.reopen_log_ratio; });
+  if (reopened == rejected_.end()) return false;
+  rival_ = *reopened;
+  rejected_.erase(reopened);
+  return true;
 }
 
 bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
@@ -117,7 +144,9 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
   }
   const bool fresh = !converged_;
   converged_ = true;
-  for (auto& place : rejected_) place = (mrpt::poses::CPose2D(place) + increment).asTPose();
+  watchRejected(scan, mean, increment);
+  // Reopened on this scan's evidence, already counted: the estimate is ambiguous from now.
+  if (!rival_ && reopenRejected()) return false;
   if (rival_) {
     rival_->move(increment);
     const auto verdict = rival_->update(*map_, scan, mean);
@@ -128,13 +157,14 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
       rival_.reset();
     } else {
       if (verdict == RivalTest::Verdict::undecided) return false;
-      rival_.reset();
       if (verdict == RivalTest::Verdict::rival_wins) {
+        rival_.reset();
         updates_since_check_ = 0;
         moveShareOfParticlesTo(place);
         return true;
       }
-      rememberRejected(place);
+      rememberRejected(*rival_);
+      rival_.reset();
       updates_since_check_ = 0;
       // In a corridor many places tie: the one that lost may not be the last look-alike. It
       // counts as one of the look-alikes weighed in this update.
@@ -155,7 +185,7 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
   // reported unambiguous has no look-alike left, not merely one that just lost.
   for (int search = 0; search < searches; ++search) {
     std::vector<mrpt::math::TPoint2D> excluded;
-    for (const auto& place : rejected_) excluded.emplace_back(place.x, place.y);
+    for (const auto& test : rejected_) excluded.emplace_back(test.rival().x, test.rival().y);
     const auto found = guard_->lookAlike(scan, mean, excluded);
     if (!found) return false;
     // A place that fits at least as well at a fresh convergence gets particles at once. Later,
@@ -167,7 +197,7 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
     }
     rival_.emplace(found->pose, gp.rival_test);
     if (rival_->update(*map_, scan, mean) != RivalTest::Verdict::tracked_wins) return false;
-    rememberRejected(rival_->rival());
+    rememberRejected(*rival_);
     rival_.reset();
   }
   return false;

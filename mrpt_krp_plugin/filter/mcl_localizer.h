@@ -94,8 +94,15 @@ class MclLocalizer {
   /// this update.
   bool searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean, bool fresh,
                           int searches);
-  /// Leaves `place` out of later searches (the oldest beyond the guard's memory is forgotten).
-  void rememberRejected(const mrpt::math::TPose2D& place);
+  /// Leaves the rival of `test` out of later searches, and keeps it under watch when the guard
+  /// says so (the oldest beyond the guard's memory is forgotten).
+  void rememberRejected(RivalTest test);
+  /// Moves the rejected places by odometry and, when they are watched, adds this scan's evidence.
+  void watchRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
+                     const mrpt::poses::CPose2D& increment);
+  /// A watched place whose lead for the tracked pose fell to the guard's reopen level becomes the
+  /// rival under test again; true when one did.
+  bool reopenRejected();
   /// The guard's share of the particles, spread around `place`; every weight reset.
   void moveShareOfParticlesTo(const mrpt::math::TPose2D& place);
 
@@ -115,7 +122,7 @@ class MclLocalizer {
   bool converged_ = false;              ///< the particles were concentrated at the last update
   int updates_since_check_ = 0;         ///< converged updates since the guard last searched
   std::optional<RivalTest> rival_;      ///< a look-alike being weighed against the mean
-  std::deque<mrpt::math::TPose2D> rejected_;  ///< look-alikes the scans decided against, moved by odometry
+  std::deque<RivalTest> rejected_;      ///< look-alikes the scans decided against, moved by odometry
   uint64_t guard_draws_ = 0;
 };
 

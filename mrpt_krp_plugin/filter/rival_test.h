@@ -6,6 +6,8 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <algorithm>
+
 namespace krp {
 
 /// A look-alike place that fits one scan nearly as well as the tracked pose is not yet a reason
@@ -43,6 +45,11 @@ class RivalTest {
   /// the (re-fitted) rival, with `map`'s likelihood options.
   Verdict update(const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CObservation2DRangeScan& scan,
                  const mrpt::math::TPose2D& tracked);
+
+  /// Holds the evidence for the tracked pose at `cap` at most: a rival decided against keeps
+  /// being weighed (the guard watches it), and fresh evidence the other way needs to undo only
+  /// this much, not everything the tracked pose ever gathered.
+  void holdLeadAt(double cap) { log_ratio_ = std::min(log_ratio_, cap); }
 
   const mrpt::math::TPose2D& rival() const { return rival_; }
   double logRatio() const { return log_ratio_; }  ///< > 0 favours the tracked pose [nats]

@@ -88,6 +88,7 @@ const std::map<std::string, Reader>& readers() {
       {"look_alike_guard", boolean(&NodeParams::look_alike_guard)},
       {"look_alike_ambiguity_margin", number(&NodeParams::look_alike_ambiguity_margin, 0.0, 1.0)},
       {"look_alike_min_fit_fraction", number(&NodeParams::look_alike_min_fit_fraction, 0.0, 1.0)},
+      {"look_alike_watch_rejected", boolean(&NodeParams::look_alike_watch_rejected)},
   };
   return r;
 }
@@ -162,6 +163,7 @@ LookAlikeGuardParams NodeParams::lookAlikeGuard() const {
   LookAlikeGuardParams g;
   g.ambiguity_margin = look_alike_ambiguity_margin;
   g.min_fit_fraction = look_alike_min_fit_fraction;
+  g.watch_rejected = look_alike_watch_rejected;
   return g;
 }
 

@@ -52,6 +52,9 @@ struct NodeParams {
   /// `track`: a converged pose explaining fewer of the scan's returns than this is published
   /// with a widened covariance and a warning (0 = off) [0..1]
   double look_alike_min_fit_fraction = LookAlikeGuardParams{}.min_fit_fraction;
+  /// `track`: a look-alike the scans decided against stays under watch and is weighed again when
+  /// later scans undo its defeat (LookAlikeGuardParams::watch_rejected)
+  bool look_alike_watch_rejected = LookAlikeGuardParams{}.watch_rejected;
 
   // Derived library parameters.
   HypothesisSourceParams hypothesisSource() const;

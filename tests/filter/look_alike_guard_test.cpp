@@ -13,11 +13,13 @@
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
 #include "mrpt_krp_plugin/filter/sensor_model.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
+#include "mrpt_krp_plugin/relocalize/relocalizer.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 #include "mrpt_krp_plugin/sim/trial.h"
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
 #include "mrpt_krp_plugin/sim/world.h"
+#include "mrpt_krp_plugin/zones/zones_yaml.h"
 #include "support/test_maps.h"
 
 namespace krp {
@@ -170,38 +172,91 @@ TEST(LookAlikeGuard, ReportsARightFilterAsAmbiguousUntilTheScansTellTheTwinApart
   EXPECT_TRUE(isConcentrated(filterSpread(strict.cov), {}));
 }
 
+/// One krp-bench trial, rebuilt from its seeds (trials.csv: trial_seed, filter_seed) as the bench
+/// runs it, so a method can be replayed on it with other settings.
+struct BenchTrialReplay {
+  BenchTrialReplay(const std::string& world_name, uint64_t trial_seed, uint64_t filter_seed, int steps_after_first_scan)
+      : world(readWorld(std::string(KRP_SOURCE_DIR) + "/sim_worlds/" + world_name + "/" + world_name + ".world.yaml")),
+        map(loadOccupancyMap(world.map_path).grid) {
+    TrialParams trial_params;
+    trial_params.steps = steps_after_first_scan;
+    trial_params.clutter = world.clutter;
+    trial = generateTrial(*map, world.lidar(world.default_lidar_profile), trial_params, trial_seed);
+    steps = trialToSteps(trial);
+    filter_params.seed = static_cast<uint32_t>(filter_seed);
+    filter_map = prepareSensorModelMap(*map, filter_params.sensor);
+    settings.seeded.seed = filter_seed;
+  }
+  World world;
+  std::shared_ptr<mrpt::maps::COccupancyGridMap2D> map;
+  Trial trial;
+  std::vector<RawlogStep> steps;
+  MclParams filter_params;
+  SensorModelMap filter_map;
+  MethodSettings settings;
+};
+
 // krp-bench's corridor trial 20 of the degenerate scenes (scripts/bench_degenerate.sh, base
 // seed 1), replayed as the bench runs it with `global-matcher-guarded`. The filter settles 7.6 m
 // along the corridor from the robot, where many places fit the scans nearly as well. With one
 // search per update, the look-alike under test lost at the last update and the estimate was
 // reported unambiguous: confidently wrong. Searching again at once finds the next look-alike.
 TEST(LookAlikeGuard, AWrongPoseInACorridorIsNotReportedUnambiguous) {
-  constexpr uint64_t kTrialSeed = 1216750802008901446ull;    // trials.csv, trial_seed
-  constexpr uint64_t kFilterSeed = 16078727496238170605ull;  // trials.csv, filter_seed
-  const auto world = readWorld(std::string(KRP_SOURCE_DIR) + "/sim_worlds/corridor/corridor.world.yaml");
-  const auto map = loadOccupancyMap(world.map_path).grid;
-  TrialParams trial_params;
-  trial_params.steps = 10;
-  trial_params.clutter = world.clutter;
-  const Trial trial = generateTrial(*map, world.lidar(world.default_lidar_profile), trial_params, kTrialSeed);
-  const auto steps = trialToSteps(trial);
-  MclParams filter_params;
-  filter_params.seed = static_cast<uint32_t>(kFilterSeed);
-  const auto filter_map = prepareSensorModelMap(*map, filter_params.sensor);
-  MethodSettings settings;
-  settings.seeded.seed = kFilterSeed;
+  BenchTrialReplay r("corridor", 1216750802008901446ull, 16078727496238170605ull, 10);
+  auto& settings = r.settings;
   MethodResources resources;
-  resources.matcher = std::make_shared<MatcherRelocalizer>(*map, settings.matcher);
+  resources.matcher = std::make_shared<MatcherRelocalizer>(*r.map, settings.matcher);
   auto confidentlyWrongAtTheEnd = [&](int searches_per_update) {
     settings.guard.searches_per_update = searches_per_update;
-    MclLocalizer loc(filter_map, makeInitializer("global-matcher-guarded", settings, resources), filter_params);
-    loc.setLookAlikeGuard(makeLookAlikeGuard(*map, settings));
+    MclLocalizer loc(r.filter_map, makeInitializer("global-matcher-guarded", settings, resources), r.filter_params);
+    loc.setLookAlikeGuard(makeLookAlikeGuard(*r.map, settings));
     MclEstimate e;
-    for (const auto& step : steps) e = loc.update(step);
-    return distance(e.mean, trial.truth.back()) > 1.0 && isConcentrated(filterSpread(e.cov), {});
+    for (const auto& step : r.steps) e = loc.update(step);
+    return distance(e.mean, r.trial.truth.back()) > 1.0 && isConcentrated(filterSpread(e.cov), {});
   };
   EXPECT_TRUE(confidentlyWrongAtTheEnd(1)) << "the trial shows the fault with a single search per update";
   EXPECT_FALSE(confidentlyWrongAtTheEnd(LookAlikeGuardParams{}.searches_per_update));
+}
+
+// krp-bench's office trial 81 (scripts/bench_relocalization.sh office, base seed 1), replayed with
+// `seeded` over 30 steps. The first scan's best answer is the 180 deg twin 8.4 m away, which
+// explains the cluttered scan better than the truth; the truth, found as a look-alike, loses its
+// test within three scans. Only metres later do the scans favour it. A rejected look-alike that
+// is only left out of searches is never weighed again: the filter ends confidently wrong. Watched,
+// it turns the estimate ambiguous once the scans have undone its defeat, and wins.
+TEST(LookAlikeGuard, ALookAlikeDecidedAgainstTooEarlyIsWatchedAndComesBack) {
+  BenchTrialReplay r("office_two_zone", 4072543816566992097ull, 18210581210280946496ull, 30);
+  auto& settings = r.settings;
+  MethodResources resources;
+  resources.relocalizers["seeded"] =
+      std::make_shared<Relocalizer>(std::string(KRP_SOURCE_DIR) + "/models/office_two_zone", *r.map,
+                                    relocalizerParamsFor("seeded", settings.relocalizer), readZonesYaml(r.world.zones_path));
+  auto run = [&](bool watch_rejected, int* ambiguous_updates) {
+    settings.guard.watch_rejected = watch_rejected;
+    MclLocalizer loc(r.filter_map, makeInitializer("seeded", settings, resources), r.filter_params);
+    loc.setLookAlikeGuard(makeLookAlikeGuard(*r.map, settings));
+    MclEstimate e;
+    *ambiguous_updates = 0;
+    for (const auto& step : r.steps) {
+      e = loc.update(step);
+      *ambiguous_updates += e.ambiguous_with.has_value();
+    }
+    return e;
+  };
+  int ambiguous_forgotten = 0, ambiguous_watched = 0;
+  const auto forgotten = run(false, &ambiguous_forgotten);
+  EXPECT_GT(distance(forgotten.mean, r.trial.truth.back()), 3.0) << "the trial shows the fault without watching";
+  EXPECT_TRUE(isConcentrated(filterSpread(forgotten.cov), {}));
+  const auto watched = run(true, &ambiguous_watched);
+  EXPECT_GT(ambiguous_watched, ambiguous_forgotten) << "the rejected twin was weighed again";
+  EXPECT_FALSE(distance(watched.mean, r.trial.truth.back()) > 0.5 && isConcentrated(filterSpread(watched.cov), {}))
+      << "not confidently wrong at the end";
+}
+
+TEST(LookAlikeGuard, RefusesAReopenLevelAtOrAboveTheDecisiveRatio) {
+  LookAlikeGuardParams p;
+  p.reopen_log_ratio = p.rival_test.decisive_log_ratio;
+  EXPECT_THROW(LookAlikeGuard(std::make_shared<CorrelativeMatcher>(test::asymmetricRoom()), p), std::invalid_argument);
 }
 
 // A filter that is right, on scans whose returns mostly hit pillars the map does not hold: the

@@ -53,6 +53,29 @@ TEST(RivalTest, ScansDecideForThePoseTheyWereTakenAt) {
   EXPECT_LT(truth_as_rival.logRatio(), 0.0);
 }
 
+// A rival decided against is watched with its lead held at the bar: fresh evidence the other
+// way needs to undo only that much. Held lower, the same scans undo it.
+TEST(RivalTest, AHeldLeadIsUndoneByFewerScans) {
+  const auto room = roomAsTheFilterSeesIt();
+  RivalTest test(kTwin);
+  for (int i = 0; i < 5; ++i) test.update(room, *scanAt(room, kTruth, 200 + i), kTruth);
+  const double bar = RivalTestParams{}.decisive_log_ratio;
+  ASSERT_GT(test.logRatio(), bar) << "five scans gave more than the bar";
+  test.holdLeadAt(bar);
+  EXPECT_DOUBLE_EQ(test.logRatio(), bar);
+  test.holdLeadAt(2.0 * bar);
+  EXPECT_DOUBLE_EQ(test.logRatio(), bar) << "holding never raises the lead";
+  RivalTest unheld(kTwin);
+  for (int i = 0; i < 5; ++i) unheld.update(room, *scanAt(room, kTruth, 200 + i), kTruth);
+  // The scans now come from the twin (the robot was there all along): the held lead falls to
+  // zero first.
+  int scans_held = 0, scans_unheld = 0;
+  while (test.logRatio() > 0.0 && scans_held < 50) test.update(room, *scanAt(room, kTwin, 300 + scans_held++), kTruth);
+  while (unheld.logRatio() > 0.0 && scans_unheld < 50) unheld.update(room, *scanAt(room, kTwin, 300 + scans_unheld++), kTruth);
+  EXPECT_LE(test.logRatio(), 0.0);
+  EXPECT_LT(scans_held, scans_unheld);
+}
+
 // The same place a few centimetres and a degree off (as the matcher's grid gives it) is no
 // evidence against either: re-fitting both poses keeps the ratio near zero; without it, the
 // offset copy loses.

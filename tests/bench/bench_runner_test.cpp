@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/bench/bench_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "mrpt_krp_plugin/common/input_error.h"
+
+namespace krp {
+namespace {
+
+BenchConfig smallOfficeRun() {
+  BenchConfig cfg;
+  cfg.world_files = {std::string(KRP_SOURCE_DIR) + "/sim_worlds/office_two_zone/office_two_zone.world.yaml"};
+  cfg.methods = {"amcl-kld"};
+  cfg.trials = 3;
+  cfg.trial.steps = 2;
+  cfg.seed = 11;
+  return cfg;
+}
+
+// A trial replayed alone (--only-trials) is the trial of the full run: same seeds, same outcome.
+TEST(BenchRunner, OneTrialReplayedAloneMatchesTheFullRun) {
+  std::ostringstream log;
+  const auto full = runBench(smallOfficeRun(), log);
+  ASSERT_EQ(full.size(), 3u);
+  auto cfg = smallOfficeRun();
+  cfg.only_trials = {2};
+  const auto alone = runBench(cfg, log);
+  ASSERT_EQ(alone.size(), 1u);
+  const auto& a = alone.front();
+  const auto& f = full[2];
+  EXPECT_EQ(a.trial, 2);
+  EXPECT_EQ(a.trial_seed, f.trial_seed);
+  EXPECT_EQ(a.filter_seed, f.filter_seed);
+  ASSERT_EQ(a.updates.size(), f.updates.size());
+  for (size_t i = 0; i < a.updates.size(); ++i) {
+    EXPECT_DOUBLE_EQ(a.updates[i].error_xy_m, f.updates[i].error_xy_m) << "update " << i;
+    EXPECT_DOUBLE_EQ(a.updates[i].error_phi_deg, f.updates[i].error_phi_deg) << "update " << i;
+  }
+  EXPECT_NE(full[0].trial_seed, full[2].trial_seed);  // the replay did not just run trial 0 again
+}
+
+TEST(BenchRunner, RefusesATrialOutsideTheRun) {
+  auto cfg = smallOfficeRun();
+  cfg.only_trials = {3};
+  std::ostringstream log;
+  EXPECT_THROW(runBench(cfg, log), InputError);
+  cfg.only_trials = {-1};
+  EXPECT_THROW(runBench(cfg, log), InputError);
+}
+
+}  // namespace
+}  // namespace krp
