@@ -3,9 +3,9 @@
 # run krp-bench on it, every method on the same simulated trials. This is what a robot's
 # integrator does with a floor plan the project has never seen.
 #   scripts/bench_new_map.sh MAP.yaml [NAME]
-# Models go to out/models/NAME (kept: a second run skips training), the report to
-# out/new_map/NAME. The trials add the office worlds' clutter (boxes, pallets, people) to the map.
-# Environment: TRIALS (30), STEPS (10), SEED (1), SAMPLES_PER_ZONE (1000: poses per zone for
+# Models and the world file go to out/models/NAME (kept: a second run skips training), the report
+# to out/new_map/NAME (or OUT). The trials add the office worlds' clutter (boxes, pallets, people)
+# to the map. Environment: OUT, TRIALS (30), STEPS (10), SEED (1), SAMPLES_PER_ZONE (1000: poses per zone for
 # training; krp-train-map's default of 4000 takes about 4x longer on a large map),
 # METHODS (uniform-mcl,amcl-kld,seeded,global-matcher-guarded).
 # Installs what is missing and builds first (as krp-train-map does).
@@ -16,7 +16,8 @@ map="${1:?usage: scripts/bench_new_map.sh MAP.yaml [NAME]}"
 [[ -f "$map" ]] || { echo "bench_new_map: map file '$map' not found" >&2; exit 2; }
 name="${2:-$(basename "${map%.*}")}"
 models="out/models/$name"
-out="out/new_map/$name"
+out="${OUT:-out/new_map/$name}"
+world="$models/$name.world.yaml"
 if [[ ! -f "$models/manifest.json" ]]; then
   scripts/krp-train-map --map "$map" --samples-per-zone "${SAMPLES_PER_ZONE:-1000}" --out "$models"
 else
@@ -24,7 +25,7 @@ else
 fi
 mkdir -p "$out"
 # The world: the map, the zones the models were trained with, and the office worlds' clutter.
-cat > "$out/$name.world.yaml.partial" <<YAML
+cat > "$world.partial" <<YAML
 name: $name
 map: $(realpath "$map")
 zones: $(realpath "$models/zones.yaml")
@@ -38,7 +39,7 @@ clutter:
   people_per_100m2: 0.4
   placement_clearance_m: 0.2
 YAML
-mv "$out/$name.world.yaml.partial" "$out/$name.world.yaml"
-./build/mrpt_krp_plugin/apps/krp-bench --worlds "$out/$name.world.yaml" --models-for "$name=$models" \
+mv "$world.partial" "$world"
+./build/mrpt_krp_plugin/apps/krp-bench --worlds "$world" --models-for "$name=$models" \
   --methods "${METHODS:-uniform-mcl,amcl-kld,seeded,global-matcher-guarded}" \
   --trials "${TRIALS:-30}" --steps "${STEPS:-10}" --seed "${SEED:-1}" --out "$out"

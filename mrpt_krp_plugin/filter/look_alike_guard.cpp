@@ -49,6 +49,14 @@ std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation
   return place;
 }
 
+bool LookAlikeGuard::isLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& place,
+                                 const mrpt::math::TPose2D& tracked) const {
+  // The same bar as lookAlike's search: a place the matcher would not report is no look-alike,
+  // however badly the tracked pose fits too (right after a kidnap both fit nothing).
+  const double bar = std::max(matcher_->scoreAt(scan, tracked) - params_.ambiguity_margin, matcher_->params().min_score);
+  return matcher_->scoreAt(scan, place) >= bar;
+}
+
 bool LookAlikeGuard::samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) const {
   return std::hypot(a.x - b.x, a.y - b.y) < matcher_->params().exclusion_m;
 }

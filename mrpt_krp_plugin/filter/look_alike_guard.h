@@ -63,9 +63,12 @@ struct LookAlikeGuardParams {
   int remembered_rejected = 4;
   /// Rivals decided against stay under watch: each scan's evidence keeps adding to their test,
   /// whose lead for the tracked pose is held at rival_test.decisive_log_ratio, and one whose
-  /// lead falls to reopen_log_ratio is weighed as a rival again (the estimate turns ambiguous).
-  /// Two look-alikes can stay alike for metres and part only later, after the wrong one has won
-  /// the first scans. false: a rival decided against is only left out of searches.
+  /// lead falls to reopen_log_ratio, and that the scan also ranks a look-alike (isLookAlike), is
+  /// weighed as a rival again (the estimate turns ambiguous). Two look-alikes can stay alike for
+  /// metres and part only later, after the wrong one has won the first scans. The second
+  /// condition keeps an old look-alike out when the tracked pose loses for another reason (the
+  /// robot was carried off: neither fits, and the search should look for where it went).
+  /// false: a rival decided against is only left out of searches.
   bool watch_rejected = true;
   /// [nats], below rival_test.decisive_log_ratio. 0: the scans since the decision have cancelled
   /// the decisive lead it was rejected with.
@@ -97,6 +100,10 @@ class LookAlikeGuard {
   bool fitsAtLeastAsWell(const LookAlike& place) const {
     return place.score >= place.tracked_score - params_.score_margin;
   }
+  /// `place` scores within ambiguity_margin of `tracked` on `scan`, and at least the matcher's
+  /// min_score: what lookAlike would report (matcher scores).
+  bool isLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& place,
+                   const mrpt::math::TPose2D& tracked) const;
   /// Closer than the matcher's exclusion distance: one place, not two.
   bool samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) const;
   const LookAlikeGuardParams& params() const { return params_; }

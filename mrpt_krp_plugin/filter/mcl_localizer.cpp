@@ -121,11 +121,12 @@ void MclLocalizer::watchRejected(const mrpt::obs::CObservation2DRangeScan& scan,
                   rejected_.end());
 }
 
-bool MclLocalizer::reopenRejected() {
+bool MclLocalizer::reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean) {
   const auto& gp = guard_->params();
   if (!gp.watch_rejected) return false;
-  const auto reopened = std::find_if(rejected_.begin(), rejected_.end(),
-                                     [&](const RivalTest& t) { return t.logRatio() <= gp.reopen_log_ratio; });
+  const auto reopened = std::find_if(rejected_.begin(), rejected_.end(), [&](const RivalTest& t) {
+    return t.logRatio() <= gp.reopen_log_ratio && guard_->isLookAlike(scan, t.rival(), mean);
+  });
   if (reopened == rejected_.end()) return false;
   rival_ = *reopened;
   rejected_.erase(reopened);
@@ -146,7 +147,7 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
   converged_ = true;
   watchRejected(scan, mean, increment);
   // Reopened on this scan's evidence, already counted: the estimate is ambiguous from now.
-  if (!rival_ && reopenRejected()) return false;
+  if (!rival_ && reopenRejected(scan, mean)) return false;
   if (rival_) {
     rival_->move(increment);
     const auto verdict = rival_->update(*map_, scan, mean);

@@ -100,9 +100,9 @@ class MclLocalizer {
   /// Moves the rejected places by odometry and, when they are watched, adds this scan's evidence.
   void watchRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
                      const mrpt::poses::CPose2D& increment);
-  /// A watched place whose lead for the tracked pose fell to the guard's reopen level becomes the
-  /// rival under test again; true when one did.
-  bool reopenRejected();
+  /// A watched place whose lead for the tracked pose fell to the guard's reopen level, and that
+  /// `scan` ranks a look-alike of `mean`, becomes the rival under test again; true when one did.
+  bool reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean);
   /// The guard's share of the particles, spread around `place`; every weight reset.
   void moveShareOfParticlesTo(const mrpt::math::TPose2D& place);
 

@@ -253,6 +253,23 @@ TEST(LookAlikeGuard, ALookAlikeDecidedAgainstTooEarlyIsWatchedAndComesBack) {
       << "not confidently wrong at the end";
 }
 
+// A watched look-alike comes back only as what the search would report: after a kidnap the
+// tracked pose fits nothing, and a place that fits as little is no look-alike of it.
+TEST(LookAlikeGuard, APlaceIsALookAlikeOnlyWhenTheMatcherWouldReportIt) {
+  const auto room = test::asymmetricRoom();
+  const LookAlikeGuard guard(std::make_shared<CorrelativeMatcher>(room), withAmbiguityMargin(kTwinShortfallBound));
+  const auto scan = scanAtTruth(room, 3);
+  EXPECT_TRUE(guard.isLookAlike(*scan, kTwin, kTruth));
+  EXPECT_TRUE(guard.isLookAlike(*scan, kTruth, kTwin)) << "a better place is a look-alike too";
+  // Two poses turned away from the scan's walls: both fit badly, within the margin of each other.
+  const mrpt::math::TPose2D lost_a(kTruth.x, kTruth.y, mrpt::math::wrapToPi(kTruth.phi + 2.0));
+  const mrpt::math::TPose2D lost_b(kTwin.x, kTwin.y, mrpt::math::wrapToPi(kTwin.phi + 2.0));
+  const CorrelativeMatcher matcher(room);
+  ASSERT_LT(matcher.scoreAt(*scan, lost_a), matcher.params().min_score);
+  ASSERT_LT(std::abs(matcher.scoreAt(*scan, lost_a) - matcher.scoreAt(*scan, lost_b)), kTwinShortfallBound);
+  EXPECT_FALSE(guard.isLookAlike(*scan, lost_b, lost_a));
+}
+
 TEST(LookAlikeGuard, RefusesAReopenLevelAtOrAboveTheDecisiveRatio) {
   LookAlikeGuardParams p;
   p.reopen_log_ratio = p.rival_test.decisive_log_ratio;
