@@ -24,20 +24,18 @@ else
   echo "bench_new_map: using the models already in $models (delete the folder to retrain)"
 fi
 mkdir -p "$out"
-# The world: the map, the zones the models were trained with, and the office worlds' clutter.
+# The world: the map, the zones the models were trained with, and the clutter block of the
+# office world (read from its file, so the two stay the same).
+office_world=sim_worlds/office_two_zone/office_two_zone.world.yaml
+clutter="$(awk '/^clutter:/ {on = 1; print; next} on && /^[^ ]/ {on = 0} on' "$office_world")"
+[[ -n "$clutter" ]] || { echo "bench_new_map: no clutter block in $office_world" >&2; exit 1; }
 cat > "$world.partial" <<YAML
 name: $name
 map: $(realpath "$map")
 zones: $(realpath "$models/zones.yaml")
 lidar_profiles: [omni_12m]
 default_lidar_profile: omni_12m
-clutter:
-  boxes_per_100m2: 0.8
-  box_min_side_m: 0.3
-  box_max_side_m: 0.8
-  pallets_per_100m2: 0.2
-  people_per_100m2: 0.4
-  placement_clearance_m: 0.2
+$clutter
 YAML
 mv "$world.partial" "$world"
 ./build/mrpt_krp_plugin/apps/krp-bench --worlds "$world" --models-for "$name=$models" \

@@ -38,7 +38,7 @@ std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation
   LookAlike place;
   place.tracked_score = matcher_->scoreAt(scan, pose);
   MatchRequest request;
-  request.min_score = std::max(place.tracked_score - params_.ambiguity_margin, matcher_->params().min_score);
+  request.min_score = lookAlikeBar(place.tracked_score);
   request.solutions = 1;
   request.excluded = {{pose.x, pose.y}};  // the tracked place found again is no alternative to it
   request.excluded.insert(request.excluded.end(), also_excluded.begin(), also_excluded.end());
@@ -51,10 +51,13 @@ std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation
 
 bool LookAlikeGuard::isLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& place,
                                  const mrpt::math::TPose2D& tracked) const {
-  // The same bar as lookAlike's search: a place the matcher would not report is no look-alike,
-  // however badly the tracked pose fits too (right after a kidnap both fit nothing).
-  const double bar = std::max(matcher_->scoreAt(scan, tracked) - params_.ambiguity_margin, matcher_->params().min_score);
-  return matcher_->scoreAt(scan, place) >= bar;
+  // The search's bar: a place the matcher would not report is no look-alike, however badly the
+  // tracked pose fits too (right after a kidnap both fit nothing).
+  return matcher_->scoreAt(scan, place) >= lookAlikeBar(matcher_->scoreAt(scan, tracked));
+}
+
+double LookAlikeGuard::lookAlikeBar(double tracked_score) const {
+  return std::max(tracked_score - params_.ambiguity_margin, matcher_->params().min_score);
 }
 
 bool LookAlikeGuard::samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) const {

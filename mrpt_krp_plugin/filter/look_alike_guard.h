@@ -109,6 +109,10 @@ class LookAlikeGuard {
   const LookAlikeGuardParams& params() const { return params_; }
 
  private:
+  /// The score a place needs to be a look-alike of a pose scoring `tracked_score`: within
+  /// ambiguity_margin of it, and never below what the matcher reports at all.
+  double lookAlikeBar(double tracked_score) const;
+
   std::shared_ptr<const CorrelativeMatcher> matcher_;
   LookAlikeGuardParams params_;
 };
