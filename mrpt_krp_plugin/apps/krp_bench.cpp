@@ -67,6 +67,8 @@ static int run(int argc, char** argv) {
                  krp::formatNumber(krp::LookAlikeGuardParams{}.min_fit_fraction)},
                 {"guard-forget-rejected", "", "methods with the look-alike guard: a look-alike the scans decided against "
                  "is only left out of later searches, no longer watched (the guard before watching)", ""},
+                {"no-see-through", "", "methods with the look-alike guard: weigh particles and look-alikes with the "
+                 "likelihood field alone, without charging returns from beyond a mapped obstacle (the baselines never do)", ""},
                 {"min-localized-fit", "F", "relocalizing methods: the first scan's best hypothesis must explain at least "
                  "this share of its returns to be called localized (0 = off)",
                  krp::formatNumber(krp::HypothesisRankingParams{}.min_localized_fit_fraction)},
@@ -127,6 +129,7 @@ static int run(int argc, char** argv) {
   if (!(cfg.method_settings.guard.min_fit_fraction >= 0.0 && cfg.method_settings.guard.min_fit_fraction <= 1.0))
     throw krp::InputError("--guard-min-fit-fraction", "must be in [0, 1]");
   cfg.method_settings.guard.watch_rejected = !args.flag("guard-forget-rejected");
+  cfg.mcl.see_through.enabled = !args.flag("no-see-through");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,
                                   cfg.method_settings.matcher);
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");

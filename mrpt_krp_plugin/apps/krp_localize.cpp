@@ -295,6 +295,7 @@ static int run(int argc, char** argv) {
   auto init = krp::makeInitializer(s["method"], ms, resources);
   krp::MclParams mp;
   mp.seed = static_cast<uint32_t>(toNumber(s, "seed"));
+  mp.see_through.enabled = krp::methodUsesSeeThrough(s["method"]);
   krp::MclLocalizer loc(map.grid, init, mp);
   if (krp::methodUsesLookAlikeGuard(s["method"])) loc.setLookAlikeGuard(krp::makeLookAlikeGuard(*map.grid, ms));
 

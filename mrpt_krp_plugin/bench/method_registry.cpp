@@ -31,6 +31,7 @@ std::shared_ptr<const LookAlikeGuard> makeLookAlikeGuard(const mrpt::maps::COccu
   return std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(map, settings.relocalizer.matcher),
                                           settings.guard);
 }
+bool methodUsesSeeThrough(const std::string& name) { return methodUsesLookAlikeGuard(name); }
 bool methodUsesZoneSearch(const std::string& name) { return methodNeedsModels(name) && name != kKeypointsOnly; }
 
 RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParams base) {

@@ -59,6 +59,9 @@ RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParam
 /// the seeded methods but `seeded-no-guard` and `seeded-keypoints-only`, and
 /// `global-matcher-guarded`.
 bool methodUsesLookAlikeGuard(const std::string& name);
+/// The method weighs particles with the see-through penalty (MclParams::see_through) on top of
+/// the likelihood field: the guarded ones. The others weigh them as amcl does.
+bool methodUsesSeeThrough(const std::string& name);
 /// The look-alike guard of a map, with its own correlative matcher (the relocalizer's matcher
 /// settings) and `settings.guard`.
 std::shared_ptr<const LookAlikeGuard> makeLookAlikeGuard(const mrpt::maps::COccupancyGridMap2D& map,

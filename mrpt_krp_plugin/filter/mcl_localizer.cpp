@@ -55,6 +55,8 @@ MclLocalizer::MclLocalizer(OwnMap map, std::shared_ptr<ParticleInitializer> init
   o.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
   o.BETA = 0.0;  // never resample inside executeOn: see the class comment
   if (params_.kidnap.enabled) fit_scorer_ = std::make_unique<ScanFitScorer>(*map_);
+  if (params_.see_through.enabled)
+    see_through_ = std::make_unique<SeeThroughPenalty>(*map_, params_.sensor, params_.see_through);
 }
 
 void MclLocalizer::setLookAlikeGuard(std::shared_ptr<const LookAlikeGuard> guard) {
@@ -85,6 +87,11 @@ void MclLocalizer::resampleSystematicIfNeeded() {
   }
 }
 
+void MclLocalizer::weighSeeThrough(const mrpt::obs::CObservation2DRangeScan& scan) {
+  const auto beams = see_through_->checkedBeams(scan);
+  for (auto& p : pf_.m_particles) p.log_w -= see_through_->nats(beams, p.d);
+}
+
 void MclLocalizer::moveShareOfParticlesTo(const mrpt::math::TPose2D& place) {
   const auto& gp = guard_->params();
   // Every k-th particle moves, so the share is exact and the rest keep their spread.
@@ -112,7 +119,7 @@ void MclLocalizer::watchRejected(const mrpt::obs::CObservation2DRangeScan& scan,
   for (auto& test : rejected_) test.move(increment);
   if (!gp.watch_rejected) return;
   for (auto& test : rejected_) {
-    test.update(*map_, scan, mean);
+    test.update(*map_, scan, mean, see_through_.get());
     test.holdLeadAt(gp.rival_test.decisive_log_ratio);
   }
   // Re-fitted scan after scan, a watched place along a corridor can slide onto the mean.
@@ -150,7 +157,7 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
   if (!rival_ && reopenRejected(scan, mean)) return false;
   if (rival_) {
     rival_->move(increment);
-    const auto verdict = rival_->update(*map_, scan, mean);
+    const auto verdict = rival_->update(*map_, scan, mean, see_through_.get());
     const auto place = rival_->rival();
     // Re-fitted scan after scan, a rival along a corridor can slide onto the mean: then it is
     // the same place, no longer an alternative, and a fresh search follows.
@@ -197,7 +204,7 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
       return true;
     }
     rival_.emplace(found->pose, gp.rival_test);
-    if (rival_->update(*map_, scan, mean) != RivalTest::Verdict::tracked_wins) return false;
+    if (rival_->update(*map_, scan, mean, see_through_.get()) != RivalTest::Verdict::tracked_wins) return false;
     rememberRejected(*rival_);
     rival_.reset();
   }
@@ -228,10 +235,11 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   }
   mrpt::bayes::CParticleFilter::TParticleFilterStats stats;
   filter_.executeOn(pf_, action.get(), step.observations.get(), &stats);
+  const auto scan = step.observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+  if (see_through_ && scan) weighSeeThrough(*scan);
   if (!filter_.m_options.adaptiveSampleSize) resampleSystematicIfNeeded();
 
   auto [cov, mean] = pf_.getCovarianceAndMean();
-  const auto scan = step.observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
   if (guard_ && scan && guardConvergence(*scan, mean.asTPose(), cov, odometryIncrement(*action))) {
     e.look_alike_found = true;
     std::tie(cov, mean) = pf_.getCovarianceAndMean();

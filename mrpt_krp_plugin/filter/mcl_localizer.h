@@ -12,6 +12,7 @@
 #include "mrpt_krp_plugin/filter/kidnap_detector.h"
 #include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/filter/particle_initializer.h"
+#include "mrpt_krp_plugin/filter/see_through.h"
 #include "mrpt_krp_plugin/filter/sensor_model.h"
 #include "mrpt_krp_plugin/relocalize/scan_fit.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
@@ -23,6 +24,9 @@ struct MclParams {
   double resample_below_ess = 0.5;  ///< systematic resampling when ESS/N drops below this [0..1]
   uint32_t seed = 1;                ///< MRPT's global generator is reseeded with this
   KidnapDetectorParams kidnap;      ///< re-initialize by itself when the tracked pose stops fitting
+  /// Beams returning from beyond a mapped obstacle are charged against the particle, and
+  /// against a look-alike weighed by the guard, on top of the likelihood field.
+  SeeThroughParams see_through;
 };
 
 /// One filter update's outcome.
@@ -105,6 +109,8 @@ class MclLocalizer {
   bool reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean);
   /// The guard's share of the particles, spread around `place`; every weight reset.
   void moveShareOfParticlesTo(const mrpt::math::TPose2D& place);
+  /// Charges each particle for the scan's beams it would have seen through the map.
+  void weighSeeThrough(const mrpt::obs::CObservation2DRangeScan& scan);
 
   std::shared_ptr<mrpt::maps::COccupancyGridMap2D> map_;
   std::shared_ptr<ParticleInitializer> init_;
@@ -117,6 +123,8 @@ class MclLocalizer {
   /// Made with the filter when kidnap detection is on, or with a guard that has a fit floor: its
   /// distance field is map preparation, not charged to an update.
   std::unique_ptr<ScanFitScorer> fit_scorer_;
+  /// Made with the filter when MclParams::see_through is on; null otherwise.
+  std::unique_ptr<SeeThroughPenalty> see_through_;
   KidnapDetector kidnap_;
   std::shared_ptr<const LookAlikeGuard> guard_;
   bool converged_ = false;              ///< the particles were concentrated at the last update

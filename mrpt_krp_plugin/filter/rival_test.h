@@ -8,6 +8,8 @@
 
 #include <algorithm>
 
+#include "mrpt_krp_plugin/filter/see_through.h"
+
 namespace krp {
 
 /// A look-alike place that fits one scan nearly as well as the tracked pose is not yet a reason
@@ -42,9 +44,10 @@ class RivalTest {
   void move(const mrpt::poses::CPose2D& increment);
 
   /// Adds one scan's evidence: the log-likelihood at the (re-fitted) tracked pose minus that at
-  /// the (re-fitted) rival, with `map`'s likelihood options.
+  /// the (re-fitted) rival, with `map`'s likelihood options, and with the filter's see-through
+  /// penalty when it has one (the same model the particles are weighed with).
   Verdict update(const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CObservation2DRangeScan& scan,
-                 const mrpt::math::TPose2D& tracked);
+                 const mrpt::math::TPose2D& tracked, const SeeThroughPenalty* see_through = nullptr);
 
   /// Holds the evidence for the tracked pose at `cap` at most: a rival decided against keeps
   /// being weighed (the guard watches it), and fresh evidence the other way needs to undo only

@@ -89,6 +89,7 @@ const std::map<std::string, Reader>& readers() {
       {"look_alike_ambiguity_margin", number(&NodeParams::look_alike_ambiguity_margin, 0.0, 1.0)},
       {"look_alike_min_fit_fraction", number(&NodeParams::look_alike_min_fit_fraction, 0.0, 1.0)},
       {"look_alike_watch_rejected", boolean(&NodeParams::look_alike_watch_rejected)},
+      {"see_through_penalty", boolean(&NodeParams::see_through_penalty)},
   };
   return r;
 }
@@ -157,6 +158,13 @@ KidnapDetectorParams NodeParams::kidnap() const {
   KidnapDetectorParams k;
   k.enabled = relocalize_on_kidnap;
   return k;
+}
+
+MclParams NodeParams::mcl() const {
+  MclParams m;
+  m.kidnap = kidnap();
+  m.see_through.enabled = see_through_penalty;
+  return m;
 }
 
 LookAlikeGuardParams NodeParams::lookAlikeGuard() const {

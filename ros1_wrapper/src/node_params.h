@@ -55,12 +55,15 @@ struct NodeParams {
   /// `track`: a look-alike the scans decided against stays under watch and is weighed again when
   /// later scans undo its defeat (LookAlikeGuardParams::watch_rejected)
   bool look_alike_watch_rejected = LookAlikeGuardParams{}.watch_rejected;
+  /// `track`: returns from beyond a mapped obstacle count against a particle (SeeThroughParams)
+  bool see_through_penalty = SeeThroughParams{}.enabled;
 
   // Derived library parameters.
   HypothesisSourceParams hypothesisSource() const;
   SeededInitParams seeded() const;
   OdometryTrackerParams tracker() const;
   KidnapDetectorParams kidnap() const;
+  MclParams mcl() const;
   LookAlikeGuardParams lookAlikeGuard() const;
 };
 

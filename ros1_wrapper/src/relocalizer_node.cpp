@@ -124,9 +124,7 @@ void RelocalizerNode::useMap(OccupancyMap map) {
       return serialized(scan);
     };
     state->seeding = std::make_shared<SeededInitializer>(seeding_source, params_.seeded());
-    MclParams mcl;
-    mcl.kidnap = params_.kidnap();
-    state->tracker = std::make_shared<OdometryTracker>(grid, state->seeding, mcl, params_.tracker());
+    state->tracker = std::make_shared<OdometryTracker>(grid, state->seeding, params_.mcl(), params_.tracker());
     if (params_.look_alike_guard)
       state->tracker->setLookAlikeGuard(std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(*grid),
                                                                                 params_.lookAlikeGuard()));

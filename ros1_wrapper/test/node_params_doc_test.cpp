@@ -37,6 +37,7 @@ TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
   EXPECT_DOUBLE_EQ(doc["look_alike_ambiguity_margin"].as<double>(), d.look_alike_ambiguity_margin);
   EXPECT_DOUBLE_EQ(doc["look_alike_min_fit_fraction"].as<double>(), d.look_alike_min_fit_fraction);
   EXPECT_EQ(doc["look_alike_watch_rejected"].as<bool>(), d.look_alike_watch_rejected);
+  EXPECT_EQ(doc["see_through_penalty"].as<bool>(), d.see_through_penalty);
   EXPECT_DOUBLE_EQ(doc["transform_tolerance_s"].as<double>(), d.transform_tolerance_s);
   EXPECT_DOUBLE_EQ(doc["transform_timeout_s"].as<double>(), d.transform_timeout_s);
   EXPECT_EQ(doc["global_frame"].as<std::string>(), d.global_frame);

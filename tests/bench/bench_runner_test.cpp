@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "mrpt_krp_plugin/bench/method_registry.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 
 namespace krp {
@@ -50,6 +51,29 @@ TEST(BenchRunner, RefusesATrialOutsideTheRun) {
   EXPECT_THROW(runBench(cfg, log), InputError);
   cfg.only_trials = {-1};
   EXPECT_THROW(runBench(cfg, log), InputError);
+}
+
+// The baselines weigh particles as amcl does (likelihood field alone); the guarded methods add
+// the see-through penalty. The same run with the penalty switched off for every method gives
+// the guarded method the baselines' model.
+TEST(BenchRunner, OnlyTheGuardedMethodsChargeBeamsSeenThroughTheMap) {
+  for (const char* baseline : {"uniform-mcl", "amcl-kld", "amcl-kld-50k", "global-matcher", "seeded-no-guard"})
+    EXPECT_FALSE(methodUsesSeeThrough(baseline)) << baseline;
+  for (const char* guarded : {"seeded", "seeded-no-uniform", "global-matcher-guarded"})
+    EXPECT_TRUE(methodUsesSeeThrough(guarded)) << guarded;
+  auto cfg = smallOfficeRun();
+  cfg.methods = {"global-matcher-guarded"};
+  cfg.trials = 1;
+  std::ostringstream log;
+  const auto charged = runBench(cfg, log);
+  cfg.mcl.see_through.enabled = false;
+  const auto field_only = runBench(cfg, log);
+  ASSERT_EQ(charged.size(), 1u);
+  ASSERT_EQ(field_only.size(), 1u);
+  bool differ = false;
+  for (size_t i = 0; i < charged[0].updates.size(); ++i)
+    differ |= charged[0].updates[i].error_xy_m != field_only[0].updates[i].error_xy_m;
+  EXPECT_TRUE(differ) << "the penalty changed the particles' weights";
 }
 
 }  // namespace

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/filter/see_through.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "mrpt_krp_plugin/map/grid_image.h"
+#include "mrpt_krp_plugin/submap/scan_beams.h"
+
+namespace krp {
+
+namespace {
+// A ray point anywhere in a cell is within this many cells of the cell's centre, and an
+// obstacle cell reaches as far from its own: a step this much shorter than the clearance
+// cannot jump over an obstacle cell.
+constexpr double kStepSafetyCells = 1.5;
+// The shortest step, so that grazing a wall does not crawl [cells].
+constexpr double kMinStepCells = 0.5;
+}  // namespace
+
+double seeThroughNats(const SensorModelParams& sensor) {
+  // MRPT's likelihood field: zRandom / LF_maxRange + zHit * exp(-d^2 / 2 sigma^2), with d capped
+  // at LF_maxCorrsDistance; LF_maxRange is left at MRPT's default by useSensorModel.
+  const double random_term = sensor.z_random / mrpt::maps::COccupancyGridMap2D::TLikelihoodOptions().LF_maxRange;
+  const double d = sensor.max_corr_distance_m, s = sensor.std_hit_m;
+  const double on_obstacle = random_term + sensor.z_hit;
+  const double far_away = random_term + sensor.z_hit * std::exp(-d * d / (2.0 * s * s));
+  return std::log(on_obstacle) - std::log(far_away);
+}
+
+SeeThroughPenalty::SeeThroughPenalty(const mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor,
+                                     SeeThroughParams params)
+    : params_(params),
+      decimation_(std::max(1, sensor.decimation)),
+      per_beam_nats_(seeThroughNats(sensor)),
+      x_min_(map.getXMin()),
+      y_min_(map.getYMin()),
+      resolution_(map.getResolution()) {
+  if (!(params_.tolerance_m >= 0.0)) throw std::invalid_argument("SeeThroughPenalty: tolerance_m must be >= 0");
+  if (!(params_.min_occupancy > 0.0 && params_.min_occupancy < 1.0))
+    throw std::invalid_argument("SeeThroughPenalty: min_occupancy must be in (0, 1)");
+  CellClassParams cells;
+  cells.min_occupied_occupancy = params_.min_occupancy;
+  const cv::Mat not_obstacle = occupiedMask(map, cells) == 0;
+  cv::Mat by_cell_row;
+  cv::flip(not_obstacle, by_cell_row, 0);  // rows indexed by map cell y
+  cv::distanceTransform(by_cell_row, clearance_m_, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  clearance_m_ *= resolution_;
+}
+
+bool SeeThroughPenalty::crossesObstacle(double x0, double y0, double cos_a, double sin_a, double length_m) const {
+  const double safety = kStepSafetyCells * resolution_, min_step = kMinStepCells * resolution_;
+  for (double t = 0.0; t < length_m;) {
+    const double x = x0 + t * cos_a, y = y0 + t * sin_a;
+    const int cx = static_cast<int>(std::floor((x - x_min_) / resolution_));
+    const int cy = static_cast<int>(std::floor((y - y_min_) / resolution_));
+    if (cx < 0 || cy < 0 || cx >= clearance_m_.cols || cy >= clearance_m_.rows) return false;
+    const double clearance = clearance_m_.at<float>(cy, cx);
+    if (clearance <= 0.0) return true;
+    t += std::max(clearance - safety, min_step);
+  }
+  return false;
+}
+
+SeeThroughPenalty::CheckedBeams SeeThroughPenalty::checkedBeams(const mrpt::obs::CObservation2DRangeScan& scan) const {
+  const auto beams = scanBeams(scan);
+  CheckedBeams out;
+  out.sensor_on_robot = mrpt::poses::CPose2D(scan.sensorPose);
+  for (size_t i = 0; i < beams.beams.size(); i += static_cast<size_t>(decimation_)) {
+    const auto& b = beams.beams[i];
+    if (!b.hit || b.range_m <= params_.tolerance_m) continue;
+    out.cos_angle.push_back(std::cos(b.angle_rad));
+    out.sin_angle.push_back(std::sin(b.angle_rad));
+    out.clear_length_m.push_back(b.range_m - params_.tolerance_m);
+  }
+  return out;
+}
+
+int SeeThroughPenalty::count(const CheckedBeams& beams, const mrpt::math::TPose2D& robot_pose) const {
+  const auto sensor = mrpt::poses::CPose2D(robot_pose) + beams.sensor_on_robot;
+  const double cs = std::cos(sensor.phi()), sn = std::sin(sensor.phi());
+  int seen_through = 0;
+  for (size_t i = 0; i < beams.clear_length_m.size(); ++i) {
+    const double c = cs * beams.cos_angle[i] - sn * beams.sin_angle[i];
+    const double s = sn * beams.cos_angle[i] + cs * beams.sin_angle[i];
+    if (crossesObstacle(sensor.x(), sensor.y(), c, s, beams.clear_length_m[i])) ++seen_through;
+  }
+  return seen_through;
+}
+
+}  // namespace krp
