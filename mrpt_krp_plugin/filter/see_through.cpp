@@ -47,20 +47,23 @@ SeeThroughPenalty::SeeThroughPenalty(const mrpt::maps::COccupancyGridMap2D& map,
   const cv::Mat not_obstacle = occupiedMask(map, cells) == 0;
   cv::Mat by_cell_row;
   cv::flip(not_obstacle, by_cell_row, 0);  // rows indexed by map cell y
-  cv::distanceTransform(by_cell_row, clearance_m_, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  clearance_m_ *= resolution_;
+  cv::distanceTransform(by_cell_row, clearance_cells_, cv::DIST_L2, cv::DIST_MASK_PRECISE);
 }
 
 bool SeeThroughPenalty::crossesObstacle(double x0, double y0, double cos_a, double sin_a, double length_m) const {
-  const double safety = kStepSafetyCells * resolution_, min_step = kMinStepCells * resolution_;
-  for (double t = 0.0; t < length_m;) {
-    const double x = x0 + t * cos_a, y = y0 + t * sin_a;
-    const int cx = static_cast<int>(std::floor((x - x_min_) / resolution_));
-    const int cy = static_cast<int>(std::floor((y - y_min_) / resolution_));
-    if (cx < 0 || cy < 0 || cx >= clearance_m_.cols || cy >= clearance_m_.rows) return false;
-    const double clearance = clearance_m_.at<float>(cy, cx);
+  // In cell units, so that a step is one multiply-add and a cell index a truncation.
+  const double gx0 = (x0 - x_min_) / resolution_, gy0 = (y0 - y_min_) / resolution_;
+  const double length = length_m / resolution_;
+  const int cols = clearance_cells_.cols, rows = clearance_cells_.rows;
+  const float* clearance_at = clearance_cells_.ptr<float>(0);
+  for (double t = 0.0; t < length;) {
+    const double gx = gx0 + t * cos_a, gy = gy0 + t * sin_a;
+    if (gx < 0.0 || gy < 0.0) return false;
+    const int cx = static_cast<int>(gx), cy = static_cast<int>(gy);
+    if (cx >= cols || cy >= rows) return false;
+    const double clearance = clearance_at[static_cast<size_t>(cy) * cols + cx];
     if (clearance <= 0.0) return true;
-    t += std::max(clearance - safety, min_step);
+    t += std::max(clearance - kStepSafetyCells, kMinStepCells);
   }
   return false;
 }

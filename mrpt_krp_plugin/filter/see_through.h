@@ -69,7 +69,7 @@ class SeeThroughPenalty {
   SeeThroughParams params_;
   int decimation_ = 1;
   double per_beam_nats_ = 0.0;
-  cv::Mat clearance_m_;  ///< CV_32F, per map cell (row = cell y): distance to the nearest obstacle cell [m]
+  cv::Mat clearance_cells_;  ///< CV_32F, continuous, per map cell (row = cell y): distance to the nearest obstacle cell [cells]
   double x_min_ = 0, y_min_ = 0, resolution_ = 0;
 };
 
