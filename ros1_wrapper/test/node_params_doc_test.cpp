@@ -45,5 +45,17 @@ TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
   EXPECT_EQ(doc["base_frame"].as<std::string>(), d.base_frame);
 }
 
+// What the node hands its filter: the switch and the kidnap detector, nothing else changed.
+TEST(RosNodeParams, TheFilterGetsTheSeeThroughSwitchAndTheKidnapDetector) {
+  NodeParams p;
+  EXPECT_TRUE(p.mcl().see_through.enabled);
+  p.see_through_penalty = false;
+  p.relocalize_on_kidnap = true;
+  const auto mcl = p.mcl();
+  EXPECT_FALSE(mcl.see_through.enabled);
+  EXPECT_TRUE(mcl.kidnap.enabled);
+  EXPECT_EQ(mcl.sensor, MclParams{}.sensor);
+}
+
 }  // namespace
 }  // namespace krp::ros1
