@@ -87,9 +87,8 @@ void MclLocalizer::resampleSystematicIfNeeded() {
   }
 }
 
-void MclLocalizer::weighSeeThrough(const mrpt::obs::CObservation2DRangeScan& scan) {
-  const auto beams = see_through_->checkedBeams(scan);
-  for (auto& p : pf_.m_particles) p.log_w -= see_through_->nats(beams, p.d);
+void MclLocalizer::weighSeeThrough(const SeeThroughPenalty::Scan& see_through) {
+  for (auto& p : pf_.m_particles) p.log_w -= see_through.nats(p.d);
 }
 
 void MclLocalizer::moveShareOfParticlesTo(const mrpt::math::TPose2D& place) {
@@ -113,13 +112,14 @@ void MclLocalizer::rememberRejected(RivalTest test) {
   while (rejected_.size() > static_cast<size_t>(guard_->params().remembered_rejected)) rejected_.pop_front();
 }
 
-void MclLocalizer::watchRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
+void MclLocalizer::watchRejected(const mrpt::obs::CObservation2DRangeScan& scan,
+                                 const SeeThroughPenalty::Scan* see_through, const mrpt::math::TPose2D& mean,
                                  const mrpt::poses::CPose2D& increment) {
   const auto& gp = guard_->params();
   for (auto& test : rejected_) test.move(increment);
   if (!gp.watch_rejected) return;
   for (auto& test : rejected_) {
-    test.update(*map_, scan, mean, see_through_.get());
+    test.update(*map_, scan, mean, see_through);
     test.holdLeadAt(gp.rival_test.decisive_log_ratio);
   }
   // Re-fitted scan after scan, a watched place along a corridor can slide onto the mean.
@@ -140,7 +140,8 @@ bool MclLocalizer::reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan
   return true;
 }
 
-bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
+bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan,
+                                    const SeeThroughPenalty::Scan* see_through, const mrpt::math::TPose2D& mean,
                                     const mrpt::math::CMatrixDouble33& cov, const mrpt::poses::CPose2D& increment) {
   const auto& gp = guard_->params();
   if (!isConcentrated(filterSpread(cov), gp.converged)) {
@@ -152,12 +153,12 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
   }
   const bool fresh = !converged_;
   converged_ = true;
-  watchRejected(scan, mean, increment);
+  watchRejected(scan, see_through, mean, increment);
   // Reopened on this scan's evidence, already counted: the estimate is ambiguous from now.
   if (!rival_ && reopenRejected(scan, mean)) return false;
   if (rival_) {
     rival_->move(increment);
-    const auto verdict = rival_->update(*map_, scan, mean, see_through_.get());
+    const auto verdict = rival_->update(*map_, scan, mean, see_through);
     const auto place = rival_->rival();
     // Re-fitted scan after scan, a rival along a corridor can slide onto the mean: then it is
     // the same place, no longer an alternative, and a fresh search follows.
@@ -176,16 +177,17 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
       updates_since_check_ = 0;
       // In a corridor many places tie: the one that lost may not be the last look-alike. It
       // counts as one of the look-alikes weighed in this update.
-      return gp.searches_per_update > 1 && searchForLookAlike(scan, mean, fresh, gp.searches_per_update - 1);
+      return gp.searches_per_update > 1 && searchForLookAlike(scan, see_through, mean, fresh, gp.searches_per_update - 1);
     }
   }
   ++updates_since_check_;
   const bool due = fresh || (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
   if (!due) return false;
-  return searchForLookAlike(scan, mean, fresh, gp.searches_per_update);
+  return searchForLookAlike(scan, see_through, mean, fresh, gp.searches_per_update);
 }
 
-bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
+bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
+                                      const SeeThroughPenalty::Scan* see_through, const mrpt::math::TPose2D& mean,
                                       bool fresh, int searches) {
   const auto& gp = guard_->params();
   updates_since_check_ = 0;
@@ -204,7 +206,7 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
       return true;
     }
     rival_.emplace(found->pose, gp.rival_test);
-    if (rival_->update(*map_, scan, mean, see_through_.get()) != RivalTest::Verdict::tracked_wins) return false;
+    if (rival_->update(*map_, scan, mean, see_through) != RivalTest::Verdict::tracked_wins) return false;
     rememberRejected(*rival_);
     rival_.reset();
   }
@@ -236,11 +238,17 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   mrpt::bayes::CParticleFilter::TParticleFilterStats stats;
   filter_.executeOn(pf_, action.get(), step.observations.get(), &stats);
   const auto scan = step.observations->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
-  if (see_through_ && scan) weighSeeThrough(*scan);
+  // Read once: every particle and every place the guard weighs are charged on this scan.
+  std::optional<SeeThroughPenalty::Scan> see_through;
+  if (see_through_ && scan) {
+    see_through = see_through_->forScan(*scan);
+    weighSeeThrough(*see_through);
+  }
   if (!filter_.m_options.adaptiveSampleSize) resampleSystematicIfNeeded();
 
   auto [cov, mean] = pf_.getCovarianceAndMean();
-  if (guard_ && scan && guardConvergence(*scan, mean.asTPose(), cov, odometryIncrement(*action))) {
+  if (guard_ && scan &&
+      guardConvergence(*scan, see_through ? &*see_through : nullptr, mean.asTPose(), cov, odometryIncrement(*action))) {
     e.look_alike_found = true;
     std::tie(cov, mean) = pf_.getCovarianceAndMean();
   }

@@ -90,27 +90,29 @@ class MclLocalizer {
   MclLocalizer(OwnMap map, std::shared_ptr<ParticleInitializer> init, MclParams params);
   void resampleSystematicIfNeeded();
   /// The guard's check of a converged filter (searches, or weighs the rival under test);
-  /// true when particles were moved. `increment`: the robot's odometry since the last update.
-  bool guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
-                        const mrpt::math::CMatrixDouble33& cov, const mrpt::poses::CPose2D& increment);
+  /// true when particles were moved. `increment`: the robot's odometry since the last update;
+  /// `see_through`: the scan's see-through penalty, null when the filter has none.
+  bool guardConvergence(const mrpt::obs::CObservation2DRangeScan& scan, const SeeThroughPenalty::Scan* see_through,
+                        const mrpt::math::TPose2D& mean, const mrpt::math::CMatrixDouble33& cov,
+                        const mrpt::poses::CPose2D& increment);
   /// The guard's search for a look-alike of `mean`, repeated while the ones found lose at once,
   /// `searches` times at most; true when particles were moved. `fresh`: the filter converged at
   /// this update.
-  bool searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean, bool fresh,
-                          int searches);
+  bool searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const SeeThroughPenalty::Scan* see_through,
+                          const mrpt::math::TPose2D& mean, bool fresh, int searches);
   /// Leaves the rival of `test` out of later searches, and keeps it under watch when the guard
   /// says so (the oldest beyond the guard's memory is forgotten).
   void rememberRejected(RivalTest test);
   /// Moves the rejected places by odometry and, when they are watched, adds this scan's evidence.
-  void watchRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean,
-                     const mrpt::poses::CPose2D& increment);
+  void watchRejected(const mrpt::obs::CObservation2DRangeScan& scan, const SeeThroughPenalty::Scan* see_through,
+                     const mrpt::math::TPose2D& mean, const mrpt::poses::CPose2D& increment);
   /// A watched place whose lead for the tracked pose fell to the guard's reopen level, and that
   /// `scan` ranks a look-alike of `mean`, becomes the rival under test again; true when one did.
   bool reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean);
   /// The guard's share of the particles, spread around `place`; every weight reset.
   void moveShareOfParticlesTo(const mrpt::math::TPose2D& place);
   /// Charges each particle for the scan's beams it would have seen through the map.
-  void weighSeeThrough(const mrpt::obs::CObservation2DRangeScan& scan);
+  void weighSeeThrough(const SeeThroughPenalty::Scan& see_through);
 
   std::shared_ptr<mrpt::maps::COccupancyGridMap2D> map_;
   std::shared_ptr<ParticleInitializer> init_;

@@ -45,10 +45,10 @@ double RivalTest::refinedLogLikelihood(const mrpt::maps::COccupancyGridMap2D& ma
 
 RivalTest::Verdict RivalTest::update(const mrpt::maps::COccupancyGridMap2D& map,
                                      const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& tracked,
-                                     const SeeThroughPenalty* see_through) {
+                                     const SeeThroughPenalty::Scan* see_through) {
   mrpt::math::TPose2D refined_tracked = tracked;
   log_ratio_ += refinedLogLikelihood(map, scan, refined_tracked) - refinedLogLikelihood(map, scan, rival_);
-  if (see_through) log_ratio_ += see_through->nats(scan, rival_) - see_through->nats(scan, refined_tracked);
+  if (see_through) log_ratio_ += see_through->nats(rival_) - see_through->nats(refined_tracked);
   if (log_ratio_ >= params_.decisive_log_ratio) return Verdict::tracked_wins;
   if (log_ratio_ <= -params_.decisive_log_ratio) return Verdict::rival_wins;
   return Verdict::undecided;

@@ -45,9 +45,9 @@ class RivalTest {
 
   /// Adds one scan's evidence: the log-likelihood at the (re-fitted) tracked pose minus that at
   /// the (re-fitted) rival, with `map`'s likelihood options, and with the filter's see-through
-  /// penalty when it has one (the same model the particles are weighed with).
+  /// penalty for this scan when it has one (the same model the particles are weighed with).
   Verdict update(const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CObservation2DRangeScan& scan,
-                 const mrpt::math::TPose2D& tracked, const SeeThroughPenalty* see_through = nullptr);
+                 const mrpt::math::TPose2D& tracked, const SeeThroughPenalty::Scan* see_through = nullptr);
 
   /// Holds the evidence for the tracked pose at `cap` at most: a rival decided against keeps
   /// being weighed (the guard watches it), and fresh evidence the other way needs to undo only

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/filter/see_through.h"
 
-#include <opencv2/imgproc.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -44,10 +42,7 @@ SeeThroughPenalty::SeeThroughPenalty(const mrpt::maps::COccupancyGridMap2D& map,
     throw std::invalid_argument("SeeThroughPenalty: min_occupancy must be in (0, 1)");
   CellClassParams cells;
   cells.min_occupied_occupancy = params_.min_occupancy;
-  const cv::Mat not_obstacle = occupiedMask(map, cells) == 0;
-  cv::Mat by_cell_row;
-  cv::flip(not_obstacle, by_cell_row, 0);  // rows indexed by map cell y
-  cv::distanceTransform(by_cell_row, clearance_cells_, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  clearance_cells_ = obstacleDistanceByCell(map, cells);
 }
 
 bool SeeThroughPenalty::crossesObstacle(double x0, double y0, double cos_a, double sin_a, double length_m) const {
@@ -68,28 +63,29 @@ bool SeeThroughPenalty::crossesObstacle(double x0, double y0, double cos_a, doub
   return false;
 }
 
-SeeThroughPenalty::CheckedBeams SeeThroughPenalty::checkedBeams(const mrpt::obs::CObservation2DRangeScan& scan) const {
+SeeThroughPenalty::Scan SeeThroughPenalty::forScan(const mrpt::obs::CObservation2DRangeScan& scan) const {
   const auto beams = scanBeams(scan);
-  CheckedBeams out;
-  out.sensor_on_robot = mrpt::poses::CPose2D(scan.sensorPose);
+  Scan out;
+  out.penalty_ = this;
+  out.sensor_on_robot_ = mrpt::poses::CPose2D(scan.sensorPose);
   for (size_t i = 0; i < beams.beams.size(); i += static_cast<size_t>(decimation_)) {
     const auto& b = beams.beams[i];
     if (!b.hit || b.range_m <= params_.tolerance_m) continue;
-    out.cos_angle.push_back(std::cos(b.angle_rad));
-    out.sin_angle.push_back(std::sin(b.angle_rad));
-    out.clear_length_m.push_back(b.range_m - params_.tolerance_m);
+    out.cos_angle_.push_back(std::cos(b.angle_rad));
+    out.sin_angle_.push_back(std::sin(b.angle_rad));
+    out.clear_length_m_.push_back(b.range_m - params_.tolerance_m);
   }
   return out;
 }
 
-int SeeThroughPenalty::count(const CheckedBeams& beams, const mrpt::math::TPose2D& robot_pose) const {
-  const auto sensor = mrpt::poses::CPose2D(robot_pose) + beams.sensor_on_robot;
+int SeeThroughPenalty::Scan::count(const mrpt::math::TPose2D& robot_pose) const {
+  const auto sensor = mrpt::poses::CPose2D(robot_pose) + sensor_on_robot_;
   const double cs = std::cos(sensor.phi()), sn = std::sin(sensor.phi());
   int seen_through = 0;
-  for (size_t i = 0; i < beams.clear_length_m.size(); ++i) {
-    const double c = cs * beams.cos_angle[i] - sn * beams.sin_angle[i];
-    const double s = sn * beams.cos_angle[i] + cs * beams.sin_angle[i];
-    if (crossesObstacle(sensor.x(), sensor.y(), c, s, beams.clear_length_m[i])) ++seen_through;
+  for (size_t i = 0; i < clear_length_m_.size(); ++i) {
+    const double c = cs * cos_angle_[i] - sn * sin_angle_[i];
+    const double s = sn * cos_angle_[i] + cs * sin_angle_[i];
+    if (penalty_->crossesObstacle(sensor.x(), sensor.y(), c, s, clear_length_m_[i])) ++seen_through;
   }
   return seen_through;
 }

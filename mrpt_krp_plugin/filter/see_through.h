@@ -40,26 +40,31 @@ class SeeThroughPenalty {
   SeeThroughPenalty(const mrpt::maps::COccupancyGridMap2D& map, const SensorModelParams& sensor,
                     SeeThroughParams params = {});
 
-  /// The beams of a scan that are checked (every sensor.decimation-th with a return), read once
-  /// for all the poses they are checked at.
-  struct CheckedBeams {
-    mrpt::poses::CPose2D sensor_on_robot;
-    std::vector<double> cos_angle, sin_angle, clear_length_m;  ///< ray direction, length that must be clear
-  };
-  CheckedBeams checkedBeams(const mrpt::obs::CObservation2DRangeScan& scan) const;
+  /// One scan's checked beams (every sensor.decimation-th with a return), read once and charged
+  /// at as many poses as needed: a filter update weighs every particle and the guard's places
+  /// with the same scan. Valid while the SeeThroughPenalty that made it lives.
+  class Scan {
+   public:
+    /// Checked beams whose ray crosses a mapped obstacle more than tolerance_m before the
+    /// return. Rays leaving the map count as clear.
+    int count(const mrpt::math::TPose2D& robot_pose) const;
+    /// count() times seeThroughNats(): what to subtract from the pose's log-likelihood [nats].
+    double nats(const mrpt::math::TPose2D& robot_pose) const { return penalty_->per_beam_nats_ * count(robot_pose); }
 
-  /// Checked beams whose ray crosses a mapped obstacle more than tolerance_m before the return.
-  /// Rays leaving the map count as clear.
-  int count(const CheckedBeams& beams, const mrpt::math::TPose2D& robot_pose) const;
+   private:
+    friend class SeeThroughPenalty;
+    const SeeThroughPenalty* penalty_ = nullptr;
+    mrpt::poses::CPose2D sensor_on_robot_;
+    std::vector<double> cos_angle_, sin_angle_, clear_length_m_;  ///< ray direction, length that must be clear
+  };
+  Scan forScan(const mrpt::obs::CObservation2DRangeScan& scan) const;
+
+  /// Scan::count and Scan::nats for a scan charged at one pose only.
   int count(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& robot_pose) const {
-    return count(checkedBeams(scan), robot_pose);
-  }
-  /// count() times seeThroughNats(): what to subtract from the pose's log-likelihood [nats].
-  double nats(const CheckedBeams& beams, const mrpt::math::TPose2D& robot_pose) const {
-    return per_beam_nats_ * count(beams, robot_pose);
+    return forScan(scan).count(robot_pose);
   }
   double nats(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& robot_pose) const {
-    return nats(checkedBeams(scan), robot_pose);
+    return forScan(scan).nats(robot_pose);
   }
   double perBeamNats() const { return per_beam_nats_; }
 

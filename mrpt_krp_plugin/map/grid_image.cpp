@@ -49,6 +49,14 @@ cv::Mat occupiedMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClas
   return renderGrid(grid, [&](double occ) { return static_cast<uint8_t>(occ > p.min_occupied_occupancy ? 255 : 0); });
 }
 
+cv::Mat obstacleDistanceByCell(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p) {
+  cv::Mat by_cell_row;
+  cv::flip(occupiedMask(grid, p) == 0, by_cell_row, 0);
+  cv::Mat dist;
+  cv::distanceTransform(by_cell_row, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  return dist;
+}
+
 std::vector<cv::Point> maskedCells(const cv::Mat& mask) {
   cv::Mat cell_rows;
   cv::flip(mask, cell_rows, 0);  // image row 0 is the top; cell row 0 is the bottom

@@ -34,6 +34,11 @@ cv::Mat freeClearanceM(const mrpt::maps::COccupancyGridMap2D& grid, const CellCl
 /// 255 where the cell is occupied, 0 elsewhere (row 0 at the top).
 cv::Mat occupiedMask(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p = {});
 
+/// Per map cell, the distance to the nearest occupied cell [cells] (CV_32F, exact L2), indexed
+/// (cy, cx) as MRPT indexes cells, row 0 at the bottom unlike the images above: the lookup table
+/// of code that walks the grid in map coordinates (scan fit, see-through rays).
+cv::Mat obstacleDistanceByCell(const mrpt::maps::COccupancyGridMap2D& grid, const CellClassParams& p = {});
+
 /// The map cell indices (x = column cx, y = row cy, y up as in MRPT) where a mask drawn by
 /// freeMask() or occupiedMask() is set, in MRPT's cell order (cy, then cx).
 std::vector<cv::Point> maskedCells(const cv::Mat& mask);

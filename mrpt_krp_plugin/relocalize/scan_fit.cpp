@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/relocalize/scan_fit.h"
 
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -21,11 +20,7 @@ ScanFitScorer::ScanFitScorer(const mrpt::maps::COccupancyGridMap2D& map, ScanFit
     : params_(params), x_min_(map.getXMin()), y_min_(map.getYMin()), resolution_(map.getResolution()) {
   CellClassParams cells;
   cells.min_occupied_occupancy = params_.min_occupancy;
-  const cv::Mat not_obstacle = occupiedMask(map, cells) == 0;
-  cv::Mat by_cell_row;
-  cv::flip(not_obstacle, by_cell_row, 0);  // rows indexed by map cell y, as score() looks them up
-  cv::distanceTransform(by_cell_row, distance_m_, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  distance_m_ *= resolution_;
+  distance_m_ = obstacleDistanceByCell(map, cells) * resolution_;
 }
 
 ScanFit ScanFitScorer::score(const mrpt::obs::CObservation2DRangeScan& scan,

@@ -107,7 +107,8 @@ TEST(SeeThrough, TheRivalTestChargesTheRivalThatSeesThroughTheMap) {
   const auto scan = scanAt(room, kTruth, 4);
   RivalTest likelihood_field_only(kOneMetreEast), with_penalty(kOneMetreEast);
   likelihood_field_only.update(room, *scan, kTruth);
-  with_penalty.update(room, *scan, kTruth, &penalty);
+  const auto charged = penalty.forScan(*scan);
+  with_penalty.update(room, *scan, kTruth, &charged);
   EXPECT_GT(with_penalty.logRatio(), likelihood_field_only.logRatio() + penalty.perBeamNats());
 }
 
