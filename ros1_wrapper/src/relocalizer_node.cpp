@@ -297,7 +297,7 @@ void RelocalizerNode::onReply(const RelocalizationReply& reply, const std::share
     // The node's own filter is the consumer: `~relocalize` re-seeds it instead.
     s << (reply.ranking.localized ? "localized: " + describe(reply.ranking.hypotheses.front(), *map)
                                   : "not localized: " + reply.ranking.reason)
-      << " (" << reply.latency_ms << " ms)";
+      << " (backend " << params_.backend << ", " << reply.latency_ms << " ms)";
     report(s.str(), !reply.ranking.localized);
   } else if (reply.ranking.localized ||
              (params_.publish_when_not_localized && !reply.ranking.hypotheses.empty())) {
@@ -306,11 +306,12 @@ void RelocalizerNode::onReply(const RelocalizationReply& reply, const std::share
     header.frame_id = params_.global_frame;
     initialpose_pub_.publish(initialPoseMsg(reply.ranking.hypotheses.front(), *map, header));
     s << (reply.ranking.localized ? "localized: " : "published although not localized: ")
-      << describe(reply.ranking.hypotheses.front(), *map) << " (" << reply.latency_ms << " ms)";
+      << describe(reply.ranking.hypotheses.front(), *map) << " (backend " << params_.backend << ", "
+      << reply.latency_ms << " ms)";
     report(s.str(), !reply.ranking.localized);
   } else {
-    s << "not localized: " << reply.ranking.reason << " (" << reply.ranking.hypotheses.size() << " hypotheses, "
-      << reply.latency_ms << " ms); initialpose not published";
+    s << "not localized: " << reply.ranking.reason << " (" << reply.ranking.hypotheses.size()
+      << " hypotheses, backend " << params_.backend << ", " << reply.latency_ms << " ms); initialpose not published";
     report(s.str(), true);
   }
 }

@@ -37,6 +37,8 @@ namespace {
 constexpr double kMaxErrorM = 0.3;
 constexpr double kMaxErrorDeg = 5.0;
 constexpr double kScanPeriodS = 0.1;
+// How long a status the node has published may take to reach the test's subscriber.
+constexpr double kStatusWaitS = 5.0;
 // Longer than the node's default max_scan_age_s (1 s), so that the last scan it could use is stale.
 constexpr double kTransformGapS = 2.0;
 const char* kWorld = KRP_SOURCE_DIR "/sim_worlds/office_two_zone/office_two_zone.world.yaml";
@@ -301,6 +303,10 @@ TEST(RosNodeLearned, AnswersWithThePipelinesVerdict) {
     EXPECT_EQ(m.find("trigger_timeout"), std::string::npos) << m;
     EXPECT_NE(m.find("not localized: "), std::string::npos) << m;
   }
+  // The start-up status names the backend too, but `~status` is latched, so a subscriber that
+  // comes late sees only the newest message: the answer's own status is the one to wait for.
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(kStatusWaitS);
+  while (ros::WallTime::now() < end && !robot.statusContains("backend learned")) ros::WallDuration(kScanPeriodS).sleep();
   EXPECT_TRUE(robot.statusContains("backend learned")) << robot.statuses();
 }
 
