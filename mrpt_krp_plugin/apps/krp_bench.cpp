@@ -69,6 +69,9 @@ static int run(int argc, char** argv) {
                  "is only left out of later searches, no longer watched (the guard before watching)", ""},
                 {"no-see-through", "", "methods with the look-alike guard: weigh particles and look-alikes with the "
                  "likelihood field alone, without charging returns from beyond a mapped obstacle (the baselines never do)", ""},
+                {"guard-search-ignores-see-through", "", "methods with the look-alike guard: the look-alike search "
+                 "scores the returns' endpoints alone, without charging the places returns from beyond a mapped "
+                 "obstacle (the filter and the rival test still charge them; the guard before this flag)", ""},
                 {"min-localized-fit", "F", "relocalizing methods: the first scan's best hypothesis must explain at least "
                  "this share of its returns to be called localized (0 = off)",
                  krp::formatNumber(krp::HypothesisRankingParams{}.min_localized_fit_fraction)},
@@ -130,6 +133,7 @@ static int run(int argc, char** argv) {
     throw krp::InputError("--guard-min-fit-fraction", "must be in [0, 1]");
   cfg.method_settings.guard.watch_rejected = !args.flag("guard-forget-rejected");
   cfg.mcl.see_through.enabled = !args.flag("no-see-through");
+  cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,
                                   cfg.method_settings.matcher);
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");

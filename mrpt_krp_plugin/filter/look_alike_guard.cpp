@@ -21,6 +21,7 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
     throw std::invalid_argument("LookAlikeGuard: ambiguity_margin must be at least score_margin");
   if (params_.recheck_every_updates < 0 || params_.remembered_rejected < 0)
     throw std::invalid_argument("LookAlikeGuard: recheck_every_updates and remembered_rejected must be 0 or more");
+  if (params_.max_search_nodes < 0) throw std::invalid_argument("LookAlikeGuard: max_search_nodes must be 0 or more");
   if (params_.searches_per_update < 1) throw std::invalid_argument("LookAlikeGuard: searches_per_update must be at least 1");
   if (!(params_.min_fit_fraction >= 0.0 && params_.min_fit_fraction <= 1.0))
     throw std::invalid_argument("LookAlikeGuard: min_fit_fraction must be in [0, 1]");
@@ -32,16 +33,27 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
     throw std::invalid_argument("LookAlikeGuard: reopen_log_ratio must be below rival_test.decisive_log_ratio");
 }
 
+double LookAlikeGuard::score(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
+                             const SeeThroughPenalty::Scan* see_through) const {
+  return matcher_->scoreAt(scan, pose) - (see_through ? see_through->share(pose) : 0.0);
+}
+
 std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
                                                    const mrpt::math::TPose2D& pose,
-                                                   const std::vector<mrpt::math::TPoint2D>& also_excluded) const {
+                                                   const std::vector<mrpt::math::TPoint2D>& also_excluded,
+                                                   const SeeThroughPenalty::Scan* see_through) const {
   LookAlike place;
-  place.tracked_score = matcher_->scoreAt(scan, pose);
+  place.tracked_score = score(scan, pose, see_through);
   MatchRequest request;
   request.min_score = lookAlikeBar(place.tracked_score);
   request.solutions = 1;
   request.excluded = {{pose.x, pose.y}};  // the tracked place found again is no alternative to it
   request.excluded.insert(request.excluded.end(), also_excluded.begin(), also_excluded.end());
+  request.max_nodes_scored = params_.max_search_nodes;
+  if (see_through)
+    request.leaf_penalty = [see_through](const mrpt::math::TPose2D& p, double enough) {
+      return see_through->shareUpTo(p, enough);
+    };
   const auto found = matcher_->match(scan, request);
   if (found.empty()) return std::nullopt;
   place.pose = found.front().pose;
@@ -50,10 +62,10 @@ std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation
 }
 
 bool LookAlikeGuard::isLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& place,
-                                 const mrpt::math::TPose2D& tracked) const {
+                                 const mrpt::math::TPose2D& tracked, const SeeThroughPenalty::Scan* see_through) const {
   // The search's bar: a place the matcher would not report is no look-alike, however badly the
   // tracked pose fits too (right after a kidnap both fit nothing).
-  return matcher_->scoreAt(scan, place) >= lookAlikeBar(matcher_->scoreAt(scan, tracked));
+  return score(scan, place, see_through) >= lookAlikeBar(score(scan, tracked, see_through));
 }
 
 double LookAlikeGuard::lookAlikeBar(double tracked_score) const {

@@ -11,6 +11,7 @@
 
 #include "mrpt_krp_plugin/filter/filter_spread.h"
 #include "mrpt_krp_plugin/filter/rival_test.h"
+#include "mrpt_krp_plugin/filter/see_through.h"
 #include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
 
 namespace krp {
@@ -57,6 +58,16 @@ struct LookAlikeGuardParams {
   /// consumer reading only the covariance sees an unsettled pose [m], [deg].
   double unexplained_xy_std_m = 1.0;
   double unexplained_phi_std_deg = 20.0;
+  /// When the filter charges see-through beams, the search charges every candidate place its
+  /// share of them too (a return from beyond a mapped wall explains nothing), so that places
+  /// whose endpoints fit only through walls do not hide the next best one. false: the search
+  /// scores endpoints alone, as the guard did before this parameter (the filter and the rival test still
+  /// charge them).
+  bool search_charges_see_through = true;
+  /// A scan whose endpoints fit many places (among racks) leaves many places
+  /// to rule out, which can cost seconds: one search scores at most this many nodes and then
+  /// takes the best place charged so far (CorrelativeMatcher's max_nodes_scored). 0: no limit.
+  long long max_search_nodes = 1000000;
   RivalTestParams rival_test;  ///< how a look-alike that fits nearly as well is decided
   /// Rivals decided against are left out of later searches while the filter stays converged; the
   /// oldest is forgotten beyond this many (their odometry-moved positions age).
@@ -81,8 +92,8 @@ struct LookAlikeGuardParams {
 /// A place other than the tracked one that fits the scan nearly as well.
 struct LookAlike {
   mrpt::math::TPose2D pose;
-  double score = 0.0;          ///< its matcher score [0..1]
-  double tracked_score = 0.0;  ///< the tracked pose's matcher score [0..1]
+  double score = 0.0;          ///< its LookAlikeGuard::score [0..1]
+  double tracked_score = 0.0;  ///< the tracked pose's [0..1]
 };
 
 class LookAlikeGuard {
@@ -92,18 +103,26 @@ class LookAlikeGuard {
   /// still read as converged, or rival-test settings validateRivalTestParams refuses.
   LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher, LookAlikeGuardParams params = {});
 
+  /// How well `scan` fits at `pose` in the guard's units: the matcher's endpoint score, less the
+  /// share of the returns that see through the map there when `see_through` is given (a return
+  /// from beyond a mapped wall explains nothing) [0..1].
+  double score(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
+               const SeeThroughPenalty::Scan* see_through = nullptr) const;
   /// The best place at least the matcher's exclusion distance from `pose` (and from each of
-  /// `also_excluded`) that scores within ambiguity_margin of it, if any.
+  /// `also_excluded`) that scores within ambiguity_margin of it, if any. Scores as score() does:
+  /// with `see_through`, the search charges every candidate its see-through share, so that
+  /// places whose endpoints fit only because beams pass through walls do not hide the next best.
   std::optional<LookAlike> lookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
-                                     const std::vector<mrpt::math::TPoint2D>& also_excluded = {}) const;
+                                     const std::vector<mrpt::math::TPoint2D>& also_excluded = {},
+                                     const SeeThroughPenalty::Scan* see_through = nullptr) const;
   /// It fits at least as well as the tracked pose (by score_margin): particles should move there.
   bool fitsAtLeastAsWell(const LookAlike& place) const {
     return place.score >= place.tracked_score - params_.score_margin;
   }
   /// `place` scores within ambiguity_margin of `tracked` on `scan`, and at least the matcher's
-  /// min_score: what lookAlike would report (matcher scores).
+  /// min_score: what lookAlike would report (score()).
   bool isLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& place,
-                   const mrpt::math::TPose2D& tracked) const;
+                   const mrpt::math::TPose2D& tracked, const SeeThroughPenalty::Scan* see_through = nullptr) const;
   /// Closer than the matcher's exclusion distance: one place, not two.
   bool samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) const;
   const LookAlikeGuardParams& params() const { return params_; }

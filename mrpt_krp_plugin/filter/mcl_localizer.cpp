@@ -128,11 +128,12 @@ void MclLocalizer::watchRejected(const mrpt::obs::CObservation2DRangeScan& scan,
                   rejected_.end());
 }
 
-bool MclLocalizer::reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean) {
+bool MclLocalizer::reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan,
+                                  const SeeThroughPenalty::Scan* see_through, const mrpt::math::TPose2D& mean) {
   const auto& gp = guard_->params();
   if (!gp.watch_rejected) return false;
   const auto reopened = std::find_if(rejected_.begin(), rejected_.end(), [&](const RivalTest& t) {
-    return t.logRatio() <= gp.reopen_log_ratio && guard_->isLookAlike(scan, t.rival(), mean);
+    return t.logRatio() <= gp.reopen_log_ratio && guard_->isLookAlike(scan, t.rival(), mean, gp.search_charges_see_through ? see_through : nullptr);
   });
   if (reopened == rejected_.end()) return false;
   rival_ = *reopened;
@@ -155,7 +156,7 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
   converged_ = true;
   watchRejected(scan, see_through, mean, increment);
   // Reopened on this scan's evidence, already counted: the estimate is ambiguous from now.
-  if (!rival_ && reopenRejected(scan, mean)) return false;
+  if (!rival_ && reopenRejected(scan, see_through, mean)) return false;
   if (rival_) {
     rival_->move(increment);
     const auto verdict = rival_->update(*map_, scan, mean, see_through);
@@ -196,7 +197,8 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
   for (int search = 0; search < searches; ++search) {
     std::vector<mrpt::math::TPoint2D> excluded;
     for (const auto& test : rejected_) excluded.emplace_back(test.rival().x, test.rival().y);
-    const auto found = guard_->lookAlike(scan, mean, excluded);
+    const auto found =
+        guard_->lookAlike(scan, mean, excluded, gp.search_charges_see_through ? see_through : nullptr);
     if (!found) return false;
     // A place that fits at least as well at a fresh convergence gets particles at once. Later,
     // and for places that fit a little worse, the scans that follow decide first: moving

@@ -108,7 +108,8 @@ class MclLocalizer {
                      const mrpt::math::TPose2D& mean, const mrpt::poses::CPose2D& increment);
   /// A watched place whose lead for the tracked pose fell to the guard's reopen level, and that
   /// `scan` ranks a look-alike of `mean`, becomes the rival under test again; true when one did.
-  bool reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& mean);
+  bool reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan, const SeeThroughPenalty::Scan* see_through,
+                      const mrpt::math::TPose2D& mean);
   /// The guard's share of the particles, spread around `place`; every weight reset.
   void moveShareOfParticlesTo(const mrpt::math::TPose2D& place);
   /// Charges each particle for the scan's beams it would have seen through the map.

@@ -17,6 +17,8 @@ namespace {
 constexpr double kStepSafetyCells = 1.5;
 // The shortest step, so that grazing a wall does not crawl [cells].
 constexpr double kMinStepCells = 0.5;
+// countUpTo checks every kInterleave-th beam first, then the ones after them, and so on.
+constexpr size_t kInterleave = 8;
 }  // namespace
 
 double seeThroughNats(const SensorModelParams& sensor) {
@@ -78,16 +80,26 @@ SeeThroughPenalty::Scan SeeThroughPenalty::forScan(const mrpt::obs::CObservation
   return out;
 }
 
-int SeeThroughPenalty::Scan::count(const mrpt::math::TPose2D& robot_pose) const {
+int SeeThroughPenalty::Scan::countUpTo(const mrpt::math::TPose2D& robot_pose, int enough) const {
   const auto sensor = mrpt::poses::CPose2D(robot_pose) + sensor_on_robot_;
   const double cs = std::cos(sensor.phi()), sn = std::sin(sensor.phi());
+  const size_t n = clear_length_m_.size();
   int seen_through = 0;
-  for (size_t i = 0; i < clear_length_m_.size(); ++i) {
-    const double c = cs * cos_angle_[i] - sn * sin_angle_[i];
-    const double s = sn * cos_angle_[i] + cs * sin_angle_[i];
-    if (penalty_->crossesObstacle(sensor.x(), sensor.y(), c, s, clear_length_m_[i])) ++seen_through;
-  }
+  for (size_t first = 0; first < kInterleave; ++first)
+    for (size_t i = first; i < n; i += kInterleave) {
+      if (seen_through >= enough) return seen_through;
+      const double c = cs * cos_angle_[i] - sn * sin_angle_[i];
+      const double s = sn * cos_angle_[i] + cs * sin_angle_[i];
+      if (penalty_->crossesObstacle(sensor.x(), sensor.y(), c, s, clear_length_m_[i])) ++seen_through;
+    }
   return seen_through;
+}
+
+double SeeThroughPenalty::Scan::shareUpTo(const mrpt::math::TPose2D& robot_pose, double enough) const {
+  if (clear_length_m_.empty()) return 0.0;
+  const double n = static_cast<double>(clear_length_m_.size());
+  const int enough_count = static_cast<int>(std::ceil(std::max(0.0, enough) * n));
+  return countUpTo(robot_pose, enough_count) / n;
 }
 
 }  // namespace krp

@@ -47,9 +47,19 @@ class SeeThroughPenalty {
    public:
     /// Checked beams whose ray crosses a mapped obstacle more than tolerance_m before the
     /// return. Rays leaving the map count as clear.
-    int count(const mrpt::math::TPose2D& robot_pose) const;
+    int count(const mrpt::math::TPose2D& robot_pose) const { return countUpTo(robot_pose, checked()); }
+    /// count(), but it may stop once it has found `enough` (and then returns at least that): a
+    /// search that only needs to know whether a place sees through too much stops early. The
+    /// beams are checked spread over the scan, not in angle order, because the beams that see
+    /// through come in runs (a doorway, the gap between two racks).
+    int countUpTo(const mrpt::math::TPose2D& robot_pose, int enough) const;
+    int checked() const { return static_cast<int>(clear_length_m_.size()); }
     /// count() times seeThroughNats(): what to subtract from the pose's log-likelihood [nats].
     double nats(const mrpt::math::TPose2D& robot_pose) const { return penalty_->per_beam_nats_ * count(robot_pose); }
+    /// count() over the beams checked: the share of the scan's returns that see through [0..1].
+    double share(const mrpt::math::TPose2D& robot_pose) const { return shareUpTo(robot_pose, 1.0); }
+    /// share(), stopping as countUpTo does once it reaches `enough` [0..1].
+    double shareUpTo(const mrpt::math::TPose2D& robot_pose, double enough) const;
 
    private:
     friend class SeeThroughPenalty;

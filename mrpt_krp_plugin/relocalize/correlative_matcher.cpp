@@ -6,20 +6,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <queue>
 #include <stdexcept>
 
 #include "mrpt_krp_plugin/submap/scan_beams.h"
 
 namespace krp {
-
-namespace {
-
-struct Node {
-  int cx, cy, level;
-  double bound;
-};
-
-}  // namespace
 
 CorrelativeMatcher::CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& map, CorrelativeMatcherParams params)
     : params_(params), x_min_(map.getXMin()), y_min_(map.getYMin()) {
@@ -154,12 +146,13 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
                                                      const MatchRequest& request) const {
   const cv::Mat& region = request.region;
   nodes_scored_ = 0;
+  cut_short_ = false;
   if (!region.empty() && (region.size() != free_.size() || region.type() != CV_8U))
     throw std::invalid_argument("CorrelativeMatcher::match: region not made by regionOf() for this map");
   // Region cells summed over any node's window in O(1): a node with none is never scored.
   cv::Mat region_sum;
   if (!region.empty()) cv::integral(region, region_sum, CV_32S);
-  auto inRegion = [&](int cx, int cy, int level) {
+  const InRegion in_region = [&](int cx, int cy, int level) {
     if (region.empty()) return true;
     const int x1 = std::min(cx + (1 << level), region.cols), y1 = std::min(cy + (1 << level), region.rows);
     return region_sum.at<int>(y1, x1) - region_sum.at<int>(cy, x1) - region_sum.at<int>(y1, cx) +
@@ -173,54 +166,134 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
   for (int k = 0; k < n_rot; ++k) rotations.push_back(rotate(points, -M_PI + 2.0 * M_PI * k / n_rot));
 
   std::vector<MatchSolution> out;
-  const int top = params_.depth, step = 1 << top;
+  const double bar = request.min_score.value_or(params_.min_score);
   for (int sol = 0; sol < request.solutions.value_or(params_.solutions); ++sol) {
-    auto excluded = [&](int cx, int cy) {
+    const Candidate candidate = [&](int cx, int cy) {
+      if (cx >= free_.cols || cy >= free_.rows || !robotCellFree(cx, cy) || !in_region(cx, cy, 0)) return false;
       const double x = x_min_ + (cx + 0.5) * res, y = y_min_ + (cy + 0.5) * res;
       for (const auto& o : out)
-        if (std::hypot(o.pose.x - x, o.pose.y - y) < params_.exclusion_m) return true;
+        if (std::hypot(o.pose.x - x, o.pose.y - y) < params_.exclusion_m) return false;
       for (const auto& p : request.excluded)
-        if (std::hypot(p.x - x, p.y - y) < params_.exclusion_m) return true;
-      return false;
+        if (std::hypot(p.x - x, p.y - y) < params_.exclusion_m) return false;
+      return true;
     };
-    MatchSolution best{{}, request.min_score.value_or(params_.min_score)};
-    bool found = false;
-    for (const auto& rot : rotations) {
-      std::vector<Node> roots;
-      for (int cy = 0; cy < free_.rows; cy += step)
-        for (int cx = 0; cx < free_.cols; cx += step)
-          if (inRegion(cx, cy, top)) roots.push_back({cx, cy, top, bound(rot, cx, cy, top)});
-      std::sort(roots.begin(), roots.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
-      // Depth-first, best child first; a node whose bound cannot beat the best is pruned.
-      const auto visit = [&](const auto& self, const Node& n) -> void {
-        if (n.bound <= best.score) return;
-        if (n.level == 0) {
-          if (n.cx >= free_.cols || n.cy >= free_.rows || !robotCellFree(n.cx, n.cy) || !inRegion(n.cx, n.cy, 0) ||
-              excluded(n.cx, n.cy))
-            return;
-          best = {{x_min_ + (n.cx + 0.5) * res, y_min_ + (n.cy + 0.5) * res, rot.phi}, n.bound};
-          found = true;
-          return;
-        }
-        const int half = 1 << (n.level - 1);
-        std::array<Node, 4> children;
-        size_t count = 0;
-        for (int dy : {0, half})
-          for (int dx : {0, half})
-            if (n.cx + dx < free_.cols && n.cy + dy < free_.rows && inRegion(n.cx + dx, n.cy + dy, n.level - 1))
-              children[count++] = {n.cx + dx, n.cy + dy, n.level - 1, bound(rot, n.cx + dx, n.cy + dy, n.level - 1)};
-        std::sort(children.begin(), children.begin() + count, [](const Node& a, const Node& b) { return a.bound > b.bound; });
-        for (size_t i = 0; i < count; ++i) self(self, children[i]);
-      };
-      for (const auto& r : roots) {
-        if (r.bound <= best.score) break;
-        visit(visit, r);
-      }
-    }
-    if (!found) break;
-    out.push_back(best);
+    const auto best = request.leaf_penalty ? searchBestFirst(rotations, bar, in_region, candidate, request.leaf_penalty,
+                                                             request.max_nodes_scored)
+                                           : searchDepthFirst(rotations, bar, in_region, candidate);
+    if (!best) break;
+    out.push_back(*best);
   }
   return out;
+}
+
+mrpt::math::TPose2D CorrelativeMatcher::poseOf(int cx, int cy, double phi) const {
+  const double res = params_.resolution_m;
+  return {x_min_ + (cx + 0.5) * res, y_min_ + (cy + 0.5) * res, phi};
+}
+
+std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vector<Rotation>& rotations, double bar,
+                                                                  const InRegion& in_region,
+                                                                  const Candidate& candidate) const {
+  const int top = params_.depth, step = 1 << top;
+  MatchSolution best{{}, bar};
+  bool found = false;
+  for (const auto& rot : rotations) {
+    std::vector<Node> roots;
+    for (int cy = 0; cy < free_.rows; cy += step)
+      for (int cx = 0; cx < free_.cols; cx += step)
+        if (in_region(cx, cy, top)) roots.push_back({cx, cy, top, bound(rot, cx, cy, top)});
+    std::sort(roots.begin(), roots.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
+    // Best child first; a node whose bound cannot beat the best is pruned.
+    const auto visit = [&](const auto& self, const Node& n) -> void {
+      if (n.bound <= best.score) return;
+      if (n.level == 0) {
+        if (!candidate(n.cx, n.cy)) return;
+        best = {poseOf(n.cx, n.cy, rot.phi), n.bound};
+        found = true;
+        return;
+      }
+      const int half = 1 << (n.level - 1);
+      std::array<Node, 4> children;
+      size_t count = 0;
+      for (int dy : {0, half})
+        for (int dx : {0, half})
+          if (n.cx + dx < free_.cols && n.cy + dy < free_.rows && in_region(n.cx + dx, n.cy + dy, n.level - 1))
+            children[count++] = {n.cx + dx, n.cy + dy, n.level - 1, bound(rot, n.cx + dx, n.cy + dy, n.level - 1)};
+      std::sort(children.begin(), children.begin() + count, [](const Node& a, const Node& b) { return a.bound > b.bound; });
+      for (size_t i = 0; i < count; ++i) self(self, children[i]);
+    };
+    for (const auto& r : roots) {
+      if (r.bound <= best.score) break;
+      visit(visit, r);
+    }
+  }
+  if (!found) return std::nullopt;
+  return best;
+}
+
+std::optional<MatchSolution> CorrelativeMatcher::searchBestFirst(const std::vector<Rotation>& rotations, double bar,
+                                                                 const InRegion& in_region, const Candidate& candidate,
+                                                                 const LeafPenalty& leaf_penalty,
+                                                                 long long max_nodes) const {
+  // One queue over every rotation, highest bound first. A candidate's endpoint score bounds its
+  // charged score, so it is charged only when it reaches the top, and goes back in with the
+  // charge; a charged candidate at the top beats every bound left. Depth-first with a low bar
+  // would charge every candidate that clears the bar, most of which a better place outscores.
+  struct Entry {
+    double key;  ///< bound, or a charged candidate's score
+    int rotation;
+    Node node;
+    bool charged;
+    bool operator<(const Entry& o) const { return key < o.key; }
+  };
+  std::priority_queue<Entry> queue;
+  const long long nodes_before = nodes_scored_;
+  // The best charged candidate so far: nothing that cannot beat it needs charging or expanding.
+  std::optional<Entry> best;
+  const auto floor = [&] { return best ? best->key : bar; };
+  const int top = params_.depth, step = 1 << top;
+  for (size_t k = 0; k < rotations.size(); ++k)
+    for (int cy = 0; cy < free_.rows; cy += step)
+      for (int cx = 0; cx < free_.cols; cx += step)
+        if (in_region(cx, cy, top)) {
+          const double b = bound(rotations[k], cx, cy, top);
+          if (b > bar) queue.push({b, static_cast<int>(k), {cx, cy, top, b}, false});
+        }
+  const auto solution = [&](const Entry& e) {
+    return MatchSolution{poseOf(e.node.cx, e.node.cy, rotations[e.rotation].phi), e.key};
+  };
+  while (!queue.empty()) {
+    const Entry e = queue.top();
+    queue.pop();
+    if (e.charged) return solution(e);  // the top: it beats every bound left
+    if (e.key <= floor()) continue;      // queued before a better place was charged
+    if (max_nodes > 0 && nodes_scored_ - nodes_before >= max_nodes) {
+      // Out of budget: the best place charged so far is a true answer, maybe not the best.
+      cut_short_ = true;
+      return best ? std::optional<MatchSolution>(solution(*best)) : std::nullopt;
+    }
+    const Node& n = e.node;
+    const Rotation& rot = rotations[e.rotation];
+    if (n.level == 0) {
+      if (!candidate(n.cx, n.cy)) continue;
+      const double penalty = leaf_penalty(poseOf(n.cx, n.cy, rot.phi), n.bound - floor());
+      if (!(penalty >= 0.0)) throw std::invalid_argument("CorrelativeMatcher::match: leaf_penalty must be >= 0");
+      if (n.bound - penalty > floor()) {
+        best = Entry{n.bound - penalty, e.rotation, n, true};
+        queue.push(*best);
+      }
+      continue;
+    }
+    const int half = 1 << (n.level - 1);
+    for (int dy : {0, half})
+      for (int dx : {0, half}) {
+        const int cx = n.cx + dx, cy = n.cy + dy;
+        if (cx >= free_.cols || cy >= free_.rows || !in_region(cx, cy, n.level - 1)) continue;
+        const double b = bound(rot, cx, cy, n.level - 1);
+        if (b > floor()) queue.push({b, e.rotation, {cx, cy, n.level - 1, b}, false});
+      }
+  }
+  return std::nullopt;
 }
 
 }  // namespace krp

@@ -6,6 +6,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <opencv2/core.hpp>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -38,6 +39,20 @@ struct MatchRequest {
   std::optional<double> min_score;
   std::optional<int> solutions;                  ///< replaces CorrelativeMatcherParams::solutions
   std::vector<mrpt::math::TPoint2D> excluded;    ///< no solution within exclusion_m of these
+  /// Evidence the returns' endpoints cannot show (a return from beyond a mapped wall), charged
+  /// to each full-resolution candidate in score units: a solution's score is its endpoint score
+  /// less this. It must never be negative, so that the coarser levels' bounds still bound every
+  /// candidate and the search stays exact. `enough` is the charge that takes the candidate down
+  /// to min_score: the function may stop there and return any value at least as large. With
+  /// it the search runs best-first, so that only candidates whose endpoint score beats the
+  /// answer are charged. Empty: none.
+  std::function<double(const mrpt::math::TPose2D& pose, double enough)> leaf_penalty;
+  /// With leaf_penalty: one solution's search scores at most this many nodes (a scan whose
+  /// endpoints fit many places, as among a warehouse's racks, leaves many bounds above the
+  /// answer, and the search can cost seconds); then the best candidate charged so far is the
+  /// answer, which may not be the best there is (lastSearchCutShort() says so). 0: no limit, the
+  /// search is exact. Without leaf_penalty the depth-first search is exact and ignores this.
+  long long max_nodes_scored = 0;
 
   /// Only poses inside `region`, everything else as the parameters say.
   static MatchRequest within(const cv::Mat& region) {
@@ -49,7 +64,7 @@ struct MatchRequest {
 
 struct MatchSolution {
   mrpt::math::TPose2D pose;  ///< robot pose in the map frame, on the search grid
-  double score = 0.0;        ///< mean return score [0..1]
+  double score = 0.0;        ///< mean return score, less the request's leaf_penalty [0..1]
 };
 
 /// The global scan matcher a user would otherwise reach for: an exhaustive multi-resolution
@@ -73,6 +88,8 @@ class CorrelativeMatcher {
 
   /// Nodes whose bound was computed in the last match() (a measure of its cost).
   long long lastNodesScored() const { return nodes_scored_; }
+  /// The last match() ran out of MatchRequest::max_nodes_scored: its answer may not be the best.
+  bool lastSearchCutShort() const { return cut_short_; }
   const CorrelativeMatcherParams& params() const { return params_; }
 
  private:
@@ -85,6 +102,23 @@ class CorrelativeMatcher {
     std::vector<int> linear;
     int min_x = 0, max_x = 0, min_y = 0, max_y = 0;
   };
+  struct Node {
+    int cx, cy, level;
+    double bound;  ///< no candidate in the node's window scores more
+  };
+  using InRegion = std::function<bool(int cx, int cy, int level)>;
+  using Candidate = std::function<bool(int cx, int cy)>;  ///< a cell a solution may stand on
+  using LeafPenalty = std::function<double(const mrpt::math::TPose2D& pose, double enough)>;
+
+  /// The best candidate scoring above `bar`: depth-first, best child first, pruned by the best
+  /// found so far (fast when nothing is charged beyond the endpoint score).
+  std::optional<MatchSolution> searchDepthFirst(const std::vector<Rotation>& rotations, double bar,
+                                                const InRegion& in_region, const Candidate& candidate) const;
+  /// The same, every candidate charged `leaf_penalty`, expanding the highest bound first.
+  std::optional<MatchSolution> searchBestFirst(const std::vector<Rotation>& rotations, double bar,
+                                               const InRegion& in_region, const Candidate& candidate,
+                                               const LeafPenalty& leaf_penalty, long long max_nodes) const;
+  mrpt::math::TPose2D poseOf(int cx, int cy, double phi) const;  ///< a search-grid cell's centre, heading phi
   /// The scan's returns in the robot frame, evenly decimated to max_points.
   std::vector<mrpt::math::TPoint2D> returns(const mrpt::obs::CObservation2DRangeScan& scan) const;
   Rotation rotate(const std::vector<mrpt::math::TPoint2D>& points, double phi) const;
@@ -99,6 +133,7 @@ class CorrelativeMatcher {
   cv::Mat free_;                 ///< CV_8U, robot may stand here
   double x_min_ = 0, y_min_ = 0;
   mutable long long nodes_scored_ = 0;
+  mutable bool cut_short_ = false;
 };
 
 }  // namespace krp

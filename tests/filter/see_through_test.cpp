@@ -122,5 +122,24 @@ TEST(SeeThrough, RefusesANegativeToleranceOrAnOccupancyOutsideTheUnitInterval) {
   EXPECT_THROW(SeeThroughPenalty(room, SensorModelParams{}, p), std::invalid_argument);
 }
 
+// countUpTo may stop once it has found enough: never more than the whole count, at least
+// `enough` when there are that many, and the whole count when asked for more.
+TEST(SeeThrough, ACountThatMayStopEarlyStopsOnlyOnceItHasEnough) {
+  const auto room = test::asymmetricRoom();
+  const SeeThroughPenalty penalty(room, everyBeam());
+  const auto scan = penalty.forScan(*scanAt(room, kTruth, 4));
+  const int all = scan.count(kOneMetreEast);
+  ASSERT_GT(all, 20);
+  for (int enough : {1, 5, all - 1}) {
+    const int some = scan.countUpTo(kOneMetreEast, enough);
+    EXPECT_GE(some, enough);
+    EXPECT_LE(some, all);
+  }
+  EXPECT_EQ(scan.countUpTo(kOneMetreEast, all + 1), all);
+  EXPECT_DOUBLE_EQ(scan.share(kOneMetreEast), static_cast<double>(all) / scan.checked());
+  EXPECT_GE(scan.shareUpTo(kOneMetreEast, 0.05), 0.05);
+  EXPECT_DOUBLE_EQ(scan.shareUpTo(kOneMetreEast, 1.0), scan.share(kOneMetreEast));
+}
+
 }  // namespace
 }  // namespace krp

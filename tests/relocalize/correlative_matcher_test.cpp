@@ -3,6 +3,7 @@
 
 #include <mrpt/math/wrap2pi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
@@ -154,6 +155,98 @@ TEST(CorrelativeMatcher, AKnownScoreBoundsTheSearch) {
   bounded = {};
   bounded.min_score = open[0].score + 0.01;
   EXPECT_TRUE(matcher.match(*scan, bounded).empty()) << "nothing beats the best";
+}
+
+// A charge that rules out the best place (and everything within the exclusion distance of it)
+// leaves what excluding it leaves: the charged search, best-first, agrees with the depth-first
+// one on the answer and its score.
+TEST(CorrelativeMatcher, AChargeThatRulesOutAPlaceLeavesWhatExcludingItLeaves) {
+  const auto room = test::asymmetricRoom();
+  CorrelativeMatcherParams params;
+  params.solutions = 1;
+  const CorrelativeMatcher matcher(room, params);
+  const auto scan = scanAt(room, mrpt::poses::CPose2D(5.52, 2.07, 0.8));
+  const auto open = matcher.match(*scan);
+  ASSERT_EQ(open.size(), 1u);
+  const mrpt::math::TPoint2D best(open[0].pose.x, open[0].pose.y);
+
+  MatchRequest excluding;
+  excluding.excluded = {best};
+  const auto expected = matcher.match(*scan, excluding);
+  ASSERT_EQ(expected.size(), 1u);
+
+  MatchRequest charging;
+  charging.leaf_penalty = [&](const mrpt::math::TPose2D& p, double) {
+    return std::hypot(p.x - best.x, p.y - best.y) < params.exclusion_m ? 1.0 : 0.0;
+  };
+  const auto charged = matcher.match(*scan, charging);
+  ASSERT_EQ(charged.size(), 1u);
+  EXPECT_DOUBLE_EQ(charged[0].score, expected[0].score);
+  EXPECT_DOUBLE_EQ(charged[0].pose.x, expected[0].pose.x);
+  EXPECT_DOUBLE_EQ(charged[0].pose.y, expected[0].pose.y);
+  EXPECT_DOUBLE_EQ(charged[0].pose.phi, expected[0].pose.phi);
+  EXPECT_FALSE(matcher.lastSearchCutShort());
+}
+
+// A charge that varies over the map: branch and bound answers what the exhaustive charged
+// search does, and the answer's score is its endpoint score less its charge.
+TEST(CorrelativeMatcher, ChargedBranchAndBoundFindsWhatExhaustiveChargedSearchFinds) {
+  const auto room = test::asymmetricRoom();
+  const auto scan = scanAt(room, mrpt::poses::CPose2D(2.0, 4.5, -2.2));
+  const auto charge = [](const mrpt::math::TPose2D& p) { return 0.15 * (1.0 + std::sin(3.0 * p.x + 2.0 * p.y + p.phi)); };
+  MatchRequest charging;
+  int stopped_early = 0;
+  charging.leaf_penalty = [&](const mrpt::math::TPose2D& p, double enough) {
+    EXPECT_GE(enough, 0.0);
+    // What a caller that stops counting may return: anything at least `enough`, once reached.
+    if (charge(p) >= enough) {
+      ++stopped_early;
+      return std::max(enough, 0.3);
+    }
+    return charge(p);
+  };
+  CorrelativeMatcherParams exhaustive;
+  exhaustive.angular_step_deg = 10.0;
+  exhaustive.depth = 0;
+  exhaustive.solutions = 1;
+  CorrelativeMatcherParams bnb = exhaustive;
+  bnb.depth = 5;
+  const CorrelativeMatcher a(room, exhaustive), b(room, bnb);
+  const auto sa = a.match(*scan, charging), sb = b.match(*scan, charging);
+  ASSERT_EQ(sa.size(), 1u);
+  ASSERT_EQ(sb.size(), 1u);
+  EXPECT_DOUBLE_EQ(sa[0].score, sb[0].score);
+  EXPECT_DOUBLE_EQ(sa[0].pose.x, sb[0].pose.x);
+  EXPECT_DOUBLE_EQ(sa[0].pose.y, sb[0].pose.y);
+  EXPECT_DOUBLE_EQ(sb[0].score, b.scoreAt(*scan, sb[0].pose) - charge(sb[0].pose));
+  EXPECT_GT(stopped_early, 0) << "the search should tell the charge when it may stop";
+  EXPECT_LT(b.lastNodesScored(), a.lastNodesScored() / 5) << "the bounds should prune most of the charged search too";
+  const auto uncharged = b.match(*scan, MatchRequest{});
+  ASSERT_EQ(uncharged.size(), 1u);
+  EXPECT_GT(uncharged[0].score, sb[0].score);
+}
+
+// A search out of its node budget answers with the best place it charged, which is no better
+// than the exact answer, and says that it was cut short; a negative charge is refused.
+TEST(CorrelativeMatcher, AChargedSearchOutOfBudgetSaysSoAndANegativeChargeIsRefused) {
+  const auto map = bareRectangle();
+  const CorrelativeMatcher matcher(map);
+  const auto scan = scanAt(map, mrpt::poses::CPose2D(3.0, 2.5, 0.3));
+  MatchRequest charging;
+  charging.solutions = 1;
+  charging.leaf_penalty = [](const mrpt::math::TPose2D& p, double) { return p.x < 4.5 ? 0.2 : 0.0; };
+  const auto exact = matcher.match(*scan, charging);
+  ASSERT_EQ(exact.size(), 1u);
+  EXPECT_FALSE(matcher.lastSearchCutShort());
+  const long long nodes = matcher.lastNodesScored();
+  charging.max_nodes_scored = nodes / 2;
+  const auto cut = matcher.match(*scan, charging);
+  EXPECT_TRUE(matcher.lastSearchCutShort());
+  EXPECT_LE(matcher.lastNodesScored(), nodes / 2 + 4) << "stops within one expansion of the budget";
+  if (!cut.empty()) EXPECT_LE(cut[0].score, exact[0].score);
+  charging.max_nodes_scored = 0;
+  charging.leaf_penalty = [](const mrpt::math::TPose2D&, double) { return -0.1; };
+  EXPECT_THROW(matcher.match(*scan, charging), std::invalid_argument);
 }
 
 }  // namespace
