@@ -72,6 +72,9 @@ static int run(int argc, char** argv) {
                 {"guard-search-ignores-see-through", "", "methods with the look-alike guard: the look-alike search "
                  "scores the returns' endpoints alone, without charging the places returns from beyond a mapped "
                  "obstacle (the filter and the rival test still charge them; the guard before this flag)", ""},
+                {"guard-max-search-nodes", "N", "methods with the look-alike guard: nodes one look-alike search charged "
+                 "for see-through may score before it answers with the best place charged so far (0 = no limit)",
+                 std::to_string(krp::LookAlikeGuardParams{}.max_search_nodes)},
                 {"min-localized-fit", "F", "relocalizing methods: the first scan's best hypothesis must explain at least "
                  "this share of its returns to be called localized (0 = off)",
                  krp::formatNumber(krp::HypothesisRankingParams{}.min_localized_fit_fraction)},
@@ -134,6 +137,8 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.watch_rejected = !args.flag("guard-forget-rejected");
   cfg.mcl.see_through.enabled = !args.flag("no-see-through");
   cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");
+  cfg.method_settings.guard.max_search_nodes = args.integer("guard-max-search-nodes");
+  if (cfg.method_settings.guard.max_search_nodes < 0) throw krp::InputError("--guard-max-search-nodes", "must be 0 or more");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,
                                   cfg.method_settings.matcher);
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");
