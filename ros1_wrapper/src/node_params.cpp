@@ -16,6 +16,9 @@ namespace {
 
 using XmlRpc::XmlRpcValue;
 
+/// The largest look_alike_max_search_nodes accepted: about twenty minutes of one core.
+constexpr int kMaxSearchNodes = 1000000000;
+
 /// One parameter: how to read it from its XML-RPC value into NodeParams.
 using Reader = std::function<void(NodeParams&, XmlRpcValue&, const std::string& key)>;
 
@@ -90,6 +93,8 @@ const std::map<std::string, Reader>& readers() {
       {"look_alike_min_fit_fraction", number(&NodeParams::look_alike_min_fit_fraction, 0.0, 1.0)},
       {"look_alike_watch_rejected", boolean(&NodeParams::look_alike_watch_rejected)},
       {"see_through_penalty", boolean(&NodeParams::see_through_penalty)},
+      {"look_alike_search_charges_see_through", boolean(&NodeParams::look_alike_search_charges_see_through)},
+      {"look_alike_max_search_nodes", integer(&NodeParams::look_alike_max_search_nodes, 0, kMaxSearchNodes)},
   };
   return r;
 }
@@ -172,6 +177,8 @@ LookAlikeGuardParams NodeParams::lookAlikeGuard() const {
   g.ambiguity_margin = look_alike_ambiguity_margin;
   g.min_fit_fraction = look_alike_min_fit_fraction;
   g.watch_rejected = look_alike_watch_rejected;
+  g.search_charges_see_through = look_alike_search_charges_see_through;
+  g.max_search_nodes = look_alike_max_search_nodes;
   return g;
 }
 

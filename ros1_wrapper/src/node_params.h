@@ -57,6 +57,12 @@ struct NodeParams {
   bool look_alike_watch_rejected = LookAlikeGuardParams{}.watch_rejected;
   /// `track`: returns from beyond a mapped obstacle count against a particle (SeeThroughParams)
   bool see_through_penalty = SeeThroughParams{}.enabled;
+  /// `track`: the look-alike search charges each place for the returns it would see through
+  /// (with see_through_penalty; LookAlikeGuardParams::search_charges_see_through)
+  bool look_alike_search_charges_see_through = LookAlikeGuardParams{}.search_charges_see_through;
+  /// `track`: nodes one charged look-alike search may score before it answers with the best place
+  /// charged so far (0 = no limit; LookAlikeGuardParams::max_search_nodes)
+  int look_alike_max_search_nodes = static_cast<int>(LookAlikeGuardParams{}.max_search_nodes);
 
   // Derived library parameters.
   HypothesisSourceParams hypothesisSource() const;
