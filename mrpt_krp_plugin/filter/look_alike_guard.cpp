@@ -35,7 +35,8 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
 
 double LookAlikeGuard::score(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
                              const SeeThroughPenalty::Scan* see_through) const {
-  return matcher_->scoreAt(scan, pose) - (see_through ? see_through->share(pose) : 0.0);
+  const auto* charged = searchCharge(see_through);
+  return matcher_->scoreAt(scan, pose) - (charged ? charged->share(pose) : 0.0);
 }
 
 std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
@@ -50,10 +51,8 @@ std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation
   request.excluded = {{pose.x, pose.y}};  // the tracked place found again is no alternative to it
   request.excluded.insert(request.excluded.end(), also_excluded.begin(), also_excluded.end());
   request.max_nodes_scored = params_.max_search_nodes;
-  if (see_through)
-    request.leaf_penalty = [see_through](const mrpt::math::TPose2D& p, double enough) {
-      return see_through->shareUpTo(p, enough);
-    };
+  if (const auto* charged = searchCharge(see_through))
+    request.leaf_penalty = [charged](const mrpt::math::TPose2D& p, double enough) { return charged->shareUpTo(p, enough); };
   const auto found = matcher_->match(scan, request);
   if (found.empty()) return std::nullopt;
   place.pose = found.front().pose;

@@ -104,13 +104,13 @@ class LookAlikeGuard {
   LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher, LookAlikeGuardParams params = {});
 
   /// How well `scan` fits at `pose` in the guard's units: the matcher's endpoint score, less the
-  /// share of the returns that see through the map there when `see_through` is given (a return
-  /// from beyond a mapped wall explains nothing) [0..1].
+  /// share of the returns that see through the map there when `see_through` is given and
+  /// search_charges_see_through is on (a return from beyond a mapped wall explains nothing) [0..1].
   double score(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
                const SeeThroughPenalty::Scan* see_through = nullptr) const;
   /// The best place at least the matcher's exclusion distance from `pose` (and from each of
   /// `also_excluded`) that scores within ambiguity_margin of it, if any. Scores as score() does:
-  /// with `see_through`, the search charges every candidate its see-through share, so that
+  /// with `see_through` (and search_charges_see_through), the search charges every candidate its see-through share, so that
   /// places whose endpoints fit only because beams pass through walls do not hide the next best.
   std::optional<LookAlike> lookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
                                      const std::vector<mrpt::math::TPoint2D>& also_excluded = {},
@@ -131,6 +131,10 @@ class LookAlikeGuard {
   /// The score a place needs to be a look-alike of a pose scoring `tracked_score`: within
   /// ambiguity_margin of it, and never below what the matcher reports at all.
   double lookAlikeBar(double tracked_score) const;
+  /// `see_through` where the search charges it (search_charges_see_through), else null.
+  const SeeThroughPenalty::Scan* searchCharge(const SeeThroughPenalty::Scan* see_through) const {
+    return params_.search_charges_see_through ? see_through : nullptr;
+  }
 
   std::shared_ptr<const CorrelativeMatcher> matcher_;
   LookAlikeGuardParams params_;

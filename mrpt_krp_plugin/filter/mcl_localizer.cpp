@@ -133,7 +133,7 @@ bool MclLocalizer::reopenRejected(const mrpt::obs::CObservation2DRangeScan& scan
   const auto& gp = guard_->params();
   if (!gp.watch_rejected) return false;
   const auto reopened = std::find_if(rejected_.begin(), rejected_.end(), [&](const RivalTest& t) {
-    return t.logRatio() <= gp.reopen_log_ratio && guard_->isLookAlike(scan, t.rival(), mean, gp.search_charges_see_through ? see_through : nullptr);
+    return t.logRatio() <= gp.reopen_log_ratio && guard_->isLookAlike(scan, t.rival(), mean, see_through);
   });
   if (reopened == rejected_.end()) return false;
   rival_ = *reopened;
@@ -197,8 +197,7 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
   for (int search = 0; search < searches; ++search) {
     std::vector<mrpt::math::TPoint2D> excluded;
     for (const auto& test : rejected_) excluded.emplace_back(test.rival().x, test.rival().y);
-    const auto found =
-        guard_->lookAlike(scan, mean, excluded, gp.search_charges_see_through ? see_through : nullptr);
+    const auto found = guard_->lookAlike(scan, mean, excluded, see_through);
     if (!found) return false;
     // A place that fits at least as well at a fresh convergence gets particles at once. Later,
     // and for places that fit a little worse, the scans that follow decide first: moving

@@ -160,7 +160,6 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
   };
   const auto points = returns(scan);
   if (points.size() < 3) return {};
-  const double res = params_.resolution_m;
   std::vector<Rotation> rotations;
   const int n_rot = std::max(1, static_cast<int>(std::lround(360.0 / params_.angular_step_deg)));
   for (int k = 0; k < n_rot; ++k) rotations.push_back(rotate(points, -M_PI + 2.0 * M_PI * k / n_rot));
@@ -170,11 +169,11 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
   for (int sol = 0; sol < request.solutions.value_or(params_.solutions); ++sol) {
     const Candidate candidate = [&](int cx, int cy) {
       if (cx >= free_.cols || cy >= free_.rows || !robotCellFree(cx, cy) || !in_region(cx, cy, 0)) return false;
-      const double x = x_min_ + (cx + 0.5) * res, y = y_min_ + (cy + 0.5) * res;
+      const auto at = poseOf(cx, cy, 0.0);
       for (const auto& o : out)
-        if (std::hypot(o.pose.x - x, o.pose.y - y) < params_.exclusion_m) return false;
+        if (std::hypot(o.pose.x - at.x, o.pose.y - at.y) < params_.exclusion_m) return false;
       for (const auto& p : request.excluded)
-        if (std::hypot(p.x - x, p.y - y) < params_.exclusion_m) return false;
+        if (std::hypot(p.x - at.x, p.y - at.y) < params_.exclusion_m) return false;
       return true;
     };
     const auto best = request.leaf_penalty ? searchBestFirst(rotations, bar, in_region, candidate, request.leaf_penalty,
@@ -191,18 +190,37 @@ mrpt::math::TPose2D CorrelativeMatcher::poseOf(int cx, int cy, double phi) const
   return {x_min_ + (cx + 0.5) * res, y_min_ + (cy + 0.5) * res, phi};
 }
 
+std::vector<CorrelativeMatcher::Node> CorrelativeMatcher::roots(const Rotation& rot, const InRegion& in_region) const {
+  const int top = params_.depth, step = 1 << top;
+  std::vector<Node> out;
+  for (int cy = 0; cy < free_.rows; cy += step)
+    for (int cx = 0; cx < free_.cols; cx += step)
+      if (in_region(cx, cy, top)) out.push_back({cx, cy, top, bound(rot, cx, cy, top)});
+  return out;
+}
+
+size_t CorrelativeMatcher::children(const Rotation& rot, const Node& n, const InRegion& in_region,
+                                    std::array<Node, 4>& out) const {
+  const int half = 1 << (n.level - 1);
+  size_t count = 0;
+  for (int dy : {0, half})
+    for (int dx : {0, half}) {
+      const int cx = n.cx + dx, cy = n.cy + dy;
+      if (cx < free_.cols && cy < free_.rows && in_region(cx, cy, n.level - 1))
+        out[count++] = {cx, cy, n.level - 1, bound(rot, cx, cy, n.level - 1)};
+    }
+  return count;
+}
+
 std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vector<Rotation>& rotations, double bar,
                                                                   const InRegion& in_region,
                                                                   const Candidate& candidate) const {
-  const int top = params_.depth, step = 1 << top;
   MatchSolution best{{}, bar};
   bool found = false;
+  const auto higher = [](const Node& a, const Node& b) { return a.bound > b.bound; };
   for (const auto& rot : rotations) {
-    std::vector<Node> roots;
-    for (int cy = 0; cy < free_.rows; cy += step)
-      for (int cx = 0; cx < free_.cols; cx += step)
-        if (in_region(cx, cy, top)) roots.push_back({cx, cy, top, bound(rot, cx, cy, top)});
-    std::sort(roots.begin(), roots.end(), [](const Node& a, const Node& b) { return a.bound > b.bound; });
+    auto top = roots(rot, in_region);
+    std::sort(top.begin(), top.end(), higher);
     // Best child first; a node whose bound cannot beat the best is pruned.
     const auto visit = [&](const auto& self, const Node& n) -> void {
       if (n.bound <= best.score) return;
@@ -212,17 +230,12 @@ std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vec
         found = true;
         return;
       }
-      const int half = 1 << (n.level - 1);
-      std::array<Node, 4> children;
-      size_t count = 0;
-      for (int dy : {0, half})
-        for (int dx : {0, half})
-          if (n.cx + dx < free_.cols && n.cy + dy < free_.rows && in_region(n.cx + dx, n.cy + dy, n.level - 1))
-            children[count++] = {n.cx + dx, n.cy + dy, n.level - 1, bound(rot, n.cx + dx, n.cy + dy, n.level - 1)};
-      std::sort(children.begin(), children.begin() + count, [](const Node& a, const Node& b) { return a.bound > b.bound; });
-      for (size_t i = 0; i < count; ++i) self(self, children[i]);
+      std::array<Node, 4> below;
+      const size_t count = children(rot, n, in_region, below);
+      std::sort(below.begin(), below.begin() + count, higher);
+      for (size_t i = 0; i < count; ++i) self(self, below[i]);
     };
-    for (const auto& r : roots) {
+    for (const auto& r : top) {
       if (r.bound <= best.score) break;
       visit(visit, r);
     }
@@ -251,14 +264,9 @@ std::optional<MatchSolution> CorrelativeMatcher::searchBestFirst(const std::vect
   // The best charged candidate so far: nothing that cannot beat it needs charging or expanding.
   std::optional<Entry> best;
   const auto floor = [&] { return best ? best->key : bar; };
-  const int top = params_.depth, step = 1 << top;
   for (size_t k = 0; k < rotations.size(); ++k)
-    for (int cy = 0; cy < free_.rows; cy += step)
-      for (int cx = 0; cx < free_.cols; cx += step)
-        if (in_region(cx, cy, top)) {
-          const double b = bound(rotations[k], cx, cy, top);
-          if (b > bar) queue.push({b, static_cast<int>(k), {cx, cy, top, b}, false});
-        }
+    for (const auto& r : roots(rotations[k], in_region))
+      if (r.bound > bar) queue.push({r.bound, static_cast<int>(k), r, false});
   const auto solution = [&](const Entry& e) {
     return MatchSolution{poseOf(e.node.cx, e.node.cy, rotations[e.rotation].phi), e.key};
   };
@@ -284,14 +292,10 @@ std::optional<MatchSolution> CorrelativeMatcher::searchBestFirst(const std::vect
       }
       continue;
     }
-    const int half = 1 << (n.level - 1);
-    for (int dy : {0, half})
-      for (int dx : {0, half}) {
-        const int cx = n.cx + dx, cy = n.cy + dy;
-        if (cx >= free_.cols || cy >= free_.rows || !in_region(cx, cy, n.level - 1)) continue;
-        const double b = bound(rot, cx, cy, n.level - 1);
-        if (b > floor()) queue.push({b, e.rotation, {cx, cy, n.level - 1, b}, false});
-      }
+    std::array<Node, 4> below;
+    const size_t count = children(rot, n, in_region, below);
+    for (size_t i = 0; i < count; ++i)
+      if (below[i].bound > floor()) queue.push({below[i].bound, e.rotation, below[i], false});
   }
   return std::nullopt;
 }

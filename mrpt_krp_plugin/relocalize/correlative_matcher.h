@@ -6,6 +6,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <opencv2/core.hpp>
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -110,6 +111,11 @@ class CorrelativeMatcher {
   using Candidate = std::function<bool(int cx, int cy)>;  ///< a cell a solution may stand on
   using LeafPenalty = std::function<double(const mrpt::math::TPose2D& pose, double enough)>;
 
+  /// The coarsest nodes over the search grid that hold any of the region, bounded for `rot`.
+  std::vector<Node> roots(const Rotation& rot, const InRegion& in_region) const;
+  /// `n`'s children (up to four) inside the grid and the region, bounded for `rot`, written to
+  /// `out`; how many.
+  size_t children(const Rotation& rot, const Node& n, const InRegion& in_region, std::array<Node, 4>& out) const;
   /// The best candidate scoring above `bar`: depth-first, best child first, pruned by the best
   /// found so far (fast when nothing is charged beyond the endpoint score).
   std::optional<MatchSolution> searchDepthFirst(const std::vector<Rotation>& rotations, double bar,
