@@ -8,6 +8,8 @@
 #                    alone), global-matcher (~6 min on 2 idle cores);
 #   warehouse:       30 trials, the same methods but amcl-kld-50k (reports/baseline/warehouse has
 #                    it over 40 updates); uniform-mcl starts with 92,537 particles (~5 min).
+# Each trial is also checked for places that explain its whole path as well as the truth
+# (--path-ambiguity): the reports split every method's outcome by that verdict.
 # Usage: scripts/bench_relocalization.sh [office|warehouse|all] [extra krp-bench flags]
 # (build first with scripts/build.sh)
 set -euo pipefail
@@ -17,7 +19,7 @@ which="${1:-all}"
 [[ $# -gt 0 ]] && shift
 case "$which" in office|warehouse|all) ;; *) echo "usage: $0 [office|warehouse|all] [krp-bench flags]" >&2; exit 2;; esac
 bench=./build/mrpt_krp_plugin/apps/krp-bench
-common=(--lidars omni_12m --models-root models --steps 10 --seed 1)
+common=(--lidars omni_12m --models-root models --steps 10 --seed 1 --path-ambiguity)
 if [[ "$which" == all || "$which" == office ]]; then
   "$bench" --worlds office_two_zone "${common[@]}" --trials 100 \
     --methods uniform-mcl,amcl-kld,amcl-kld-50k,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \

@@ -82,6 +82,11 @@ static int run(int argc, char** argv) {
                  "applied before the 'localized' threshold", ""},
                 {"fit-calibration", "FILE", "fit a confidence calibration on this run's first-scan answers (one world, "
                  "one relocalizing method, no --calibration) and write it", ""},
+                {"path-ambiguity", "", "check each trial (not kidnap trials) for places that explain its whole path as "
+                 "well as the truth, with the filter's sensor model: the report splits every method's outcome by "
+                 "whether the scans tell the truth apart", ""},
+                {"path-ambiguity-places", "N", "--path-ambiguity: places weighed per trial (the matcher's best on the "
+                 "first scan)", std::to_string(krp::PathAmbiguityParams{}.max_places)},
                 {"tol-xy", "M", "convergence tolerance, position", "0.5"},
                 {"tol-deg", "DEG", "convergence tolerance, heading", "10"},
                 {"save-rawlogs", "", "also write each trial as an MRPT rawlog, a CARMEN log and its ground truth under OUT/rawlogs", ""}});
@@ -136,6 +141,9 @@ static int run(int argc, char** argv) {
     throw krp::InputError("--guard-min-fit-fraction", "must be in [0, 1]");
   cfg.method_settings.guard.watch_rejected = !args.flag("guard-forget-rejected");
   cfg.mcl.see_through.enabled = !args.flag("no-see-through");
+  cfg.path_ambiguity = args.flag("path-ambiguity");
+  cfg.path_ambiguity_params.max_places = static_cast<int>(args.integer("path-ambiguity-places"));
+  if (cfg.path_ambiguity_params.max_places < 1) throw krp::InputError("--path-ambiguity-places", "must be >= 1");
   cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");
   cfg.method_settings.guard.max_search_nodes = args.integer("guard-max-search-nodes");
   if (cfg.method_settings.guard.max_search_nodes < 0) throw krp::InputError("--guard-max-search-nodes", "must be 0 or more");

@@ -10,6 +10,7 @@
 
 #include "mrpt_krp_plugin/bench/kidnap_report.h"
 #include "mrpt_krp_plugin/bench/line_plot.h"
+#include "mrpt_krp_plugin/bench/path_ambiguity_report.h"
 #include "mrpt_krp_plugin/bench/record_groups.h"
 #include "mrpt_krp_plugin/bench/reliability.h"
 #include "mrpt_krp_plugin/bench/report_format.h"
@@ -182,7 +183,8 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                 "distance_to_convergence_m,cpu_to_convergence_s,initial_particles,mean_particles,"
                 "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,confident_and_right,total_cpu_s,"
                 "seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,seed_best_fit_fraction,seed_cpu_s,kidnap_step,kidnap_tracking_before,"
-                "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s\n";
+                "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s,"
+                "path_verdict,path_places,path_closest_log_ratio,path_closest_distance_m\n";
   updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s,"
                  "distance_m,fit_fraction,scan_unexplained\n";
   for (const auto& r : records) {
@@ -195,7 +197,8 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                << "," << r.seed_localized << "," << r.seed_best_error_xy_m << "," << r.seed_best_confidence << ","
                << r.seed_best_from_matcher << "," << r.seed_best_fit_fraction << "," << r.seed_cpu_s << "," << r.kidnap_step << ","
                << r.kidnap.tracking_before << "," << r.kidnap.updates_to_detect << "," << r.kidnap.recovered << ","
-               << r.kidnap.updates_to_recover << "," << r.kidnap.cpu_to_recover_s << "\n";
+               << r.kidnap.updates_to_recover << "," << r.kidnap.cpu_to_recover_s << "," << toString(r.path.verdict) << ","
+               << r.path.places << "," << r.path.closest_log_ratio << "," << r.path.closest_distance_m << "\n";
     for (size_t i = 0; i < r.updates.size(); ++i) {
       const auto& u = r.updates[i];
       updates_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << i << "," << u.error_xy_m
@@ -291,7 +294,8 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
      << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m)
      // krp-bench sets both relocalizers' rankings alike; the learned one's stands for both.
      << reliabilitySections(records, cfg.criteria.max_error_xy_m, cfg.method_settings.relocalizer.verifier.ranking)
-     << kidnapSection(summarizeKidnaps(records), cfg.kidnap_at_step);
+     << kidnapSection(summarizeKidnaps(records), cfg.kidnap_at_step)
+     << pathAmbiguitySection(splitByPathAmbiguity(records), cfg.path_ambiguity_params);
   const auto scaling = scalingPoints(records);
   const std::string scaling_md = scalingSection(scaling, "scaling.png");
   if (!scaling_md.empty()) {

@@ -70,6 +70,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     size_t world_index, lidar_index;
     MethodResources resources;
     std::vector<mrpt::math::TPoint2D> start_region;  ///< where trials start (empty: anywhere)
+    std::shared_ptr<const PathAmbiguityCheck> path_check;  ///< when BenchConfig::path_ambiguity
   };
   for (const int t : cfg.only_trials)
     if (t < 0 || t >= cfg.trials)
@@ -95,6 +96,13 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     std::shared_ptr<const LookAlikeGuard> guard;
     if (std::any_of(cfg.methods.begin(), cfg.methods.end(), methodUsesLookAlikeGuard))
       guard = makeLookAlikeGuard(*map, cfg.method_settings);
+    std::shared_ptr<const PathAmbiguityCheck> path_check;
+    if (cfg.path_ambiguity && cfg.kidnap_at_step == 0) {
+      path_check = std::make_shared<PathAmbiguityCheck>(
+          filter_map.grid, std::make_shared<CorrelativeMatcher>(*map, cfg.method_settings.matcher.matcher),
+          cfg.mcl.see_through.enabled ? std::make_shared<SeeThroughPenalty>(*map, cfg.mcl.sensor, cfg.mcl.see_through) : nullptr,
+          cfg.path_ambiguity_params);
+    }
     for (size_t li = 0; li < lidars.size(); ++li) {
       MethodResources res;
       res.matcher = matcher;
@@ -111,7 +119,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         log << "krp-bench: " << w.name << " / " << lidars[li] << ": models " << models << " (lidar "
             << r.manifest().lidar_name << ")\n";
       }
-      jobs.push_back({w, map, filter_map, w.lidar(lidars[li]), wi, li, res, start_region});
+      jobs.push_back({w, map, filter_map, w.lidar(lidars[li]), wi, li, res, start_region, path_check});
     }
   }
   log << "krp-bench: base seed " << cfg.seed << "; " << jobs.size() << " world/lidar pair(s) x " << cfg.methods.size()
@@ -131,6 +139,8 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
       const Trial trial = cfg.kidnap_at_step > 0 ? generateKidnapTrial(*job.map, job.lidar, tp, cfg, trial_seed)
                                                  : generateTrial(*job.map, job.lidar, tp, trial_seed);
       const auto steps = trialToSteps(trial);
+      PathAmbiguity path;
+      if (job.path_check) path = job.path_check->check(trial.truth, trial.scans);
       if (!cfg.rawlog_dir.empty()) {
         const std::string base =
             (std::filesystem::path(cfg.rawlog_dir) / (job.world.name + "_" + job.lidar.name + "_trial" + std::to_string(t))).string();
@@ -155,6 +165,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         rec.trial_seed = trial_seed;
         rec.filter_seed = filter_seed;
         rec.free_area_m2 = free_m2;
+        rec.path = path;
         size_t last_initialization = 0;  // the seeding to check is the last one (after a kidnap, the re-seeding)
         for (size_t i = 0; i < steps.size(); ++i) {
           const auto estimate = loc.update(steps[i]);

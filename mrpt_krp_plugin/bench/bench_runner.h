@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mrpt_krp_plugin/bench/method_registry.h"
+#include "mrpt_krp_plugin/bench/path_ambiguity.h"
 #include "mrpt_krp_plugin/bench/trial_metrics.h"
 #include "mrpt_krp_plugin/sim/trial.h"
 
@@ -32,6 +33,11 @@ struct BenchConfig {
   /// The robot is carried at least this far (a second trial starting closer is redrawn). [m]
   double kidnap_min_distance_m = 5.0;
   int kidnap_max_draws = 50;  ///< second trials drawn before the map is declared too small
+  /// Weigh, once per trial, whether another place explains its whole path as well as the truth
+  /// (PathAmbiguityCheck, with the filter's sensor model and see-through setting): the limit any
+  /// method faces. Not done for kidnap trials.
+  bool path_ambiguity = false;
+  PathAmbiguityParams path_ambiguity_params;
 };
 
 /// One method on one trial.
@@ -52,6 +58,7 @@ struct TrialRecord {
   double seed_cpu_s = -1.0;        ///< thread CPU from that scan to the drawn prior [s]; -1 without one
   int kidnap_step = -1;            ///< the update the robot was carried before; -1 without a kidnap
   KidnapOutcome kidnap;            ///< valid when kidnap_step >= 0
+  PathAmbiguity path;              ///< the trial's, the same for every method (BenchConfig::path_ambiguity)
 };
 
 /// Runs worlds x lidars x methods x trials. Each trial is simulated once and replayed for

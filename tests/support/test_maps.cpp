@@ -14,14 +14,22 @@
 namespace krp::test {
 
 namespace {
+// The room's walls, its south-west outer corner at (x0 + 0.5, 0.5).
+void drawAsymmetricRoom(FloorPlan& plan, double x0, double w, double h) {
+  const double left = x0 + 0.5;
+  plan.building(left, 0.5, left + w, 0.5 + h);
+  plan.wall(left + 0.3 * w, 0.5, left + 0.3 * w, 0.5 + 0.4 * h);
+  plan.wall(left + 0.3 * w, 0.5 + 0.4 * h, left + 0.45 * w, 0.5 + 0.4 * h);
+  plan.solid(left + 0.75 * w, 0.5 + 0.7 * h, left + 0.85 * w, 0.5 + 0.9 * h);
+}
+
 FloorPlan asymmetricRoomPlan(double w, double h, double res) {
   FloorPlan plan(w + 1.0, h + 1.0, res);
-  plan.building(0.5, 0.5, 0.5 + w, 0.5 + h);
-  plan.wall(0.5 + 0.3 * w, 0.5, 0.5 + 0.3 * w, 0.5 + 0.4 * h);
-  plan.wall(0.5 + 0.3 * w, 0.5 + 0.4 * h, 0.5 + 0.45 * w, 0.5 + 0.4 * h);
-  plan.solid(0.5 + 0.75 * w, 0.5 + 0.7 * h, 0.5 + 0.85 * w, 0.5 + 0.9 * h);
+  drawAsymmetricRoom(plan, 0.0, w, h);
   return plan;
 }
+
+constexpr double kDefaultRoomW = 8.0, kDefaultRoomH = 6.0, kDefaultRoomRes = 0.05;
 }  // namespace
 
 mrpt::maps::COccupancyGridMap2D asymmetricRoom(double w, double h, double res) {
@@ -30,12 +38,21 @@ mrpt::maps::COccupancyGridMap2D asymmetricRoom(double w, double h, double res) {
 
 mrpt::maps::COccupancyGridMap2D asymmetricRoomWithPillarsAround(double x, double y, int pillars, double radius_m,
                                                                double pillar_m) {
-  auto plan = asymmetricRoomPlan(8.0, 6.0, 0.05);
+  auto plan = asymmetricRoomPlan(kDefaultRoomW, kDefaultRoomH, kDefaultRoomRes);
   for (int i = 0; i < pillars; ++i) {
     const double a = 2.0 * M_PI * i / pillars;
     const double cx = x + radius_m * std::cos(a), cy = y + radius_m * std::sin(a);
     plan.solid(cx - 0.5 * pillar_m, cy - 0.5 * pillar_m, cx + 0.5 * pillar_m, cy + 0.5 * pillar_m);
   }
+  return plan.toGrid();
+}
+
+double twinRoomsShiftM(double gap_m) { return kDefaultRoomW + 1.0 + gap_m; }
+
+mrpt::maps::COccupancyGridMap2D twinRooms(double gap_m) {
+  FloorPlan plan(kDefaultRoomW + 1.0 + twinRoomsShiftM(gap_m), kDefaultRoomH + 1.0, kDefaultRoomRes);
+  drawAsymmetricRoom(plan, 0.0, kDefaultRoomW, kDefaultRoomH);
+  drawAsymmetricRoom(plan, twinRoomsShiftM(gap_m), kDefaultRoomW, kDefaultRoomH);
   return plan.toGrid();
 }
 

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/bench/path_ambiguity.h"
+
+#include <mrpt/poses/CPose2D.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+namespace krp {
+
+void validatePathAmbiguityParams(const PathAmbiguityParams& params) {
+  if (!(params.first_scan_margin >= 0.0 && params.first_scan_margin <= 1.0))
+    throw std::invalid_argument("PathAmbiguityParams: first_scan_margin must be in [0, 1]");
+  if (params.max_places < 1) throw std::invalid_argument("PathAmbiguityParams: max_places must be >= 1");
+  validateRivalTestParams(params.rival);
+}
+
+std::string toString(PathVerdict verdict) {
+  switch (verdict) {
+    case PathVerdict::not_checked: return "not_checked";
+    case PathVerdict::told_apart: return "told_apart";
+    case PathVerdict::ambiguous: return "ambiguous";
+    case PathVerdict::misleading: return "misleading";
+  }
+  return "unknown";
+}
+
+PathAmbiguityCheck::PathAmbiguityCheck(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
+                                       std::shared_ptr<const CorrelativeMatcher> matcher,
+                                       std::shared_ptr<const SeeThroughPenalty> see_through, PathAmbiguityParams params)
+    : map_(std::move(map)), matcher_(std::move(matcher)), see_through_(std::move(see_through)), params_(params) {
+  validatePathAmbiguityParams(params_);
+  if (!map_ || !matcher_) throw std::invalid_argument("PathAmbiguityCheck: needs a map and a matcher");
+}
+
+PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& truth,
+                                        const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans) const {
+  if (truth.empty() || truth.size() != scans.size())
+    throw std::invalid_argument("PathAmbiguityCheck: one true pose per scan, at least one");
+  const auto& start = truth.front();
+  MatchRequest request;
+  request.min_score = std::max(0.0, matcher_->scoreAt(*scans.front(), start) - params_.first_scan_margin);
+  request.solutions = params_.max_places;
+  request.excluded = {mrpt::math::TPoint2D(start.x, start.y)};
+  const auto places = matcher_->match(*scans.front(), request);
+
+  PathAmbiguity out;
+  out.places = static_cast<int>(places.size());
+  if (places.empty()) {
+    out.verdict = PathVerdict::told_apart;
+    out.closest_log_ratio = std::numeric_limits<double>::infinity();
+    return out;
+  }
+  std::vector<RivalTest> tests;
+  for (const auto& p : places) tests.emplace_back(p.pose, params_.rival);
+  for (size_t i = 0; i < scans.size(); ++i) {
+    if (i > 0) {
+      // The twin robot drives the truth's own path from its place.
+      const auto increment = mrpt::poses::CPose2D(truth[i]) - mrpt::poses::CPose2D(truth[i - 1]);
+      for (auto& t : tests) t.move(increment);
+    }
+    std::optional<SeeThroughPenalty::Scan> charged;
+    if (see_through_) charged = see_through_->forScan(*scans[i]);
+    for (auto& t : tests) t.update(*map_, *scans[i], truth[i], charged ? &*charged : nullptr);
+  }
+  size_t closest = 0;
+  for (size_t k = 1; k < tests.size(); ++k)
+    if (tests[k].logRatio() < tests[closest].logRatio()) closest = k;
+  out.closest_log_ratio = tests[closest].logRatio();
+  out.closest_distance_m = std::hypot(places[closest].pose.x - start.x, places[closest].pose.y - start.y);
+  const double bar = params_.rival.decisive_log_ratio;
+  out.verdict = out.closest_log_ratio >= bar    ? PathVerdict::told_apart
+                : out.closest_log_ratio <= -bar ? PathVerdict::misleading
+                                                : PathVerdict::ambiguous;
+  return out;
+}
+
+}  // namespace krp

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/math/TPose2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mrpt_krp_plugin/filter/rival_test.h"
+#include "mrpt_krp_plugin/filter/see_through.h"
+#include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
+
+namespace krp {
+
+/// How hard a trial is for any method that reads the map, known only to the bench, which holds
+/// the truth: in a hall of repeated aisles the robot's whole path may fit another aisle as well
+/// as its own, and then no method can tell where it is, however it is built.
+struct PathAmbiguityParams {
+  /// Places that fit the trial's first scan within this of the truth's own matcher score are
+  /// weighed [matcher score, 0..1]. A place further below has lost on that scan alone by more
+  /// than the decisive ratio (a tenth of a 180-return scan is ~18 returns at ~3 nats each).
+  double first_scan_margin = 0.1;
+  /// At most this many such places (the matcher's best ones, each at least its exclusion_m from
+  /// the truth and from one another).
+  int max_places = 8;
+  /// Each place's path is weighed against the truth's with the filter's sensor model, scan
+  /// after scan, as the look-alike guard weighs a rival; its decisive ratio is the verdict's bar.
+  RivalTestParams rival;
+};
+
+/// Throws std::invalid_argument for a margin outside [0, 1] or fewer than one place.
+void validatePathAmbiguityParams(const PathAmbiguityParams& params);
+
+enum class PathVerdict {
+  not_checked,  ///< no check asked for, or a trial it does not apply to (a kidnap)
+  told_apart,   ///< every place near as good on the first scan loses decisively over the path
+  ambiguous,    ///< a place elsewhere explains the whole path within the decisive ratio
+  misleading,   ///< a place elsewhere explains the path decisively better than the truth
+};
+std::string toString(PathVerdict verdict);
+
+struct PathAmbiguity {
+  PathVerdict verdict = PathVerdict::not_checked;
+  int places = 0;  ///< places weighed (those the first scan offered)
+  /// The truth's lead over the place that came closest, summed over the path [nats]; +inf
+  /// when the first scan offered none.
+  double closest_log_ratio = 0.0;
+  double closest_distance_m = -1.0;  ///< that place's start from the truth's [m]; -1 without one
+};
+
+/// Each place that fits a trial's first scan nearly as well as the truth, moved along the
+/// truth's own path (rigidly, as a twin robot would drive it), is weighed against the truth
+/// over every scan of the trial.
+class PathAmbiguityCheck {
+ public:
+  /// `map` carries the filter's sensor model (SensorModelMap::grid); `see_through`, when not
+  /// null, charges each side as the guarded filter does. Throws as validatePathAmbiguityParams.
+  PathAmbiguityCheck(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
+                     std::shared_ptr<const CorrelativeMatcher> matcher,
+                     std::shared_ptr<const SeeThroughPenalty> see_through, PathAmbiguityParams params = {});
+
+  /// `truth[i]` is where `scans[i]` was taken. Throws std::invalid_argument when they differ in
+  /// length or are empty.
+  PathAmbiguity check(const std::vector<mrpt::math::TPose2D>& truth,
+                      const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans) const;
+
+ private:
+  std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map_;
+  std::shared_ptr<const CorrelativeMatcher> matcher_;
+  std::shared_ptr<const SeeThroughPenalty> see_through_;
+  PathAmbiguityParams params_;
+};
+
+}  // namespace krp

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mrpt_krp_plugin/bench/path_ambiguity.h"
+
+#include <gtest/gtest.h>
+
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/filter/sensor_model.h"
+#include "mrpt_krp_plugin/sim/lidar_profile.h"
+#include "mrpt_krp_plugin/sim/scan_simulator.h"
+#include "support/test_maps.h"
+
+namespace krp {
+namespace {
+
+using mrpt::math::TPose2D;
+using Scans = std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>;
+
+// A short drive in the asymmetric room (the default one, and the first of the twin rooms),
+// clear of its inner walls.
+std::vector<TPose2D> drive() {
+  std::vector<TPose2D> path;
+  for (int i = 0; i < 6; ++i) path.emplace_back(5.2 + 0.2 * i, 2.2, 0.3 + 0.05 * i);
+  return path;
+}
+
+Scans scansAlong(const mrpt::maps::COccupancyGridMap2D& world, const std::vector<TPose2D>& path) {
+  Scans out;
+  Rng rng(7);
+  const ScanSimulator lidar(lidarProfileByName("omni_12m"));
+  for (const auto& p : path) out.push_back(lidar.simulate(world, mrpt::poses::CPose2D(p), rng));
+  return out;
+}
+
+// The check on `map` as the filter weighs scans on it, see-through penalty included.
+PathAmbiguityCheck checkOn(mrpt::maps::COccupancyGridMap2D map) {
+  useSensorModel(map, SensorModelParams{});
+  auto grid = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(map);
+  return PathAmbiguityCheck(grid, std::make_shared<const CorrelativeMatcher>(*grid),
+                            std::make_shared<const SeeThroughPenalty>(*grid, SensorModelParams{}));
+}
+
+TEST(PathAmbiguity, APathTheTwinRoomRepeatsIsAmbiguous) {
+  const auto rooms = test::twinRooms();
+  const auto path = drive();
+  const auto verdict = checkOn(rooms).check(path, scansAlong(rooms, path));
+  EXPECT_EQ(verdict.verdict, PathVerdict::ambiguous);
+  EXPECT_GE(verdict.places, 1);
+  EXPECT_NEAR(verdict.closest_distance_m, test::twinRoomsShiftM(), 0.3) << "the closest place is the twin room's";
+  EXPECT_LT(std::abs(verdict.closest_log_ratio), PathAmbiguityParams{}.rival.decisive_log_ratio);
+}
+
+TEST(PathAmbiguity, APathInARoomWithoutTwinIsToldApart) {
+  const auto room = test::asymmetricRoom();
+  const auto path = drive();
+  const auto verdict = checkOn(room).check(path, scansAlong(room, path));
+  EXPECT_EQ(verdict.verdict, PathVerdict::told_apart);
+  EXPECT_GE(verdict.closest_log_ratio, PathAmbiguityParams{}.rival.decisive_log_ratio);
+}
+
+// The same scans, with the truth said to be the room's 180 deg twin pose: the place the scans
+// came from explains them decisively better.
+TEST(PathAmbiguity, ScansThatFitAnotherPlaceBetterMislead) {
+  const auto room = test::asymmetricRoom();
+  const auto path = drive();
+  std::vector<TPose2D> claimed;
+  for (const auto& p : path) claimed.emplace_back(9.0 - p.x, 7.0 - p.y, mrpt::math::wrapToPi(p.phi + M_PI));
+  const auto verdict = checkOn(room).check(claimed, scansAlong(room, path));
+  EXPECT_EQ(verdict.verdict, PathVerdict::misleading);
+  EXPECT_LE(verdict.closest_log_ratio, -PathAmbiguityParams{}.rival.decisive_log_ratio);
+}
+
+TEST(PathAmbiguity, RefusesBadParametersAndPathsThatDoNotMatchTheScans) {
+  const auto room = test::asymmetricRoom();
+  PathAmbiguityParams p;
+  p.first_scan_margin = 1.5;
+  EXPECT_THROW(validatePathAmbiguityParams(p), std::invalid_argument);
+  p = {};
+  p.max_places = 0;
+  EXPECT_THROW(validatePathAmbiguityParams(p), std::invalid_argument);
+  p = {};
+  p.rival.decisive_log_ratio = 0.0;
+  EXPECT_THROW(validatePathAmbiguityParams(p), std::invalid_argument);
+  const auto path = drive();
+  auto scans = scansAlong(room, path);
+  scans.pop_back();
+  EXPECT_THROW(checkOn(room).check(path, scans), std::invalid_argument);
+  EXPECT_THROW(checkOn(room).check({}, {}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace krp
