@@ -38,6 +38,9 @@ static int run(int argc, char** argv) {
                 {"kidnap-at", "STEP", "carry the robot elsewhere at this step (1..steps) and run every method with "
                  "kidnap detection; the report adds a kidnap table (0 = no kidnap)", "0"},
                 {"kidnap-min-distance", "M", "--kidnap-at: the robot is carried at least this far", "5"},
+                {"kidnap-detection", "", "run every method with the filter's kidnap detector on, kidnap or not: a "
+                 "tracked pose that stops fitting the scans re-initializes the filter (the relocalizer again for "
+                 "the seeded methods, a uniform spread for the others)", ""},
                 {"seed", "N", "base seed (printed; every trial seed derives from it)", "1"},
                 {"out", "DIR", "report folder", "out/bench"},
                 {"uniform-particles", "N", "uniform-mcl: fixed particle count (0 = by density)", "0"},
@@ -105,6 +108,7 @@ static int run(int argc, char** argv) {
   if (cfg.trials < 1 || cfg.trial.steps < 0) throw krp::InputError("--trials/--steps", "must be >= 1 / >= 0");
   cfg.kidnap_at_step = static_cast<int>(args.integer("kidnap-at"));
   cfg.kidnap_min_distance_m = args.number("kidnap-min-distance");
+  cfg.mcl.kidnap.enabled = args.flag("kidnap-detection");
   if (cfg.kidnap_at_step < 0 || cfg.kidnap_at_step > cfg.trial.steps)
     throw krp::InputError("--kidnap-at", "must be in 0.." + std::to_string(cfg.trial.steps) + " (the trial's steps)");
   cfg.seed = static_cast<uint64_t>(args.integer("seed"));
