@@ -78,6 +78,9 @@ static int run(int argc, char** argv) {
                 {"guard-max-search-nodes", "N", "methods with the look-alike guard: nodes one look-alike search charged "
                  "for see-through may score before it answers with the best place charged so far (0 = no limit)",
                  std::to_string(krp::LookAlikeGuardParams{}.max_search_nodes)},
+                {"guard-refit-charges-see-through", "", "methods with the look-alike guard: the rival test re-fits "
+                 "each side to the likelihood less the see-through penalty, not to the likelihood alone "
+                 "(RivalTestParams::refit_charges_see_through)", ""},
                 {"min-localized-fit", "F", "relocalizing methods: the first scan's best hypothesis must explain at least "
                  "this share of its returns to be called localized (0 = off)",
                  krp::formatNumber(krp::HypothesisRankingParams{}.min_localized_fit_fraction)},
@@ -146,6 +149,7 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.watch_rejected = !args.flag("guard-forget-rejected");
   cfg.mcl.see_through.enabled = !args.flag("no-see-through");
   cfg.path_ambiguity = args.flag("path-ambiguity");
+  cfg.method_settings.guard.rival_test.refit_charges_see_through = args.flag("guard-refit-charges-see-through");
   cfg.path_ambiguity_params.max_places = static_cast<int>(args.integer("path-ambiguity-places"));
   if (cfg.path_ambiguity_params.max_places < 1) throw krp::InputError("--path-ambiguity-places", "must be >= 1");
   cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");

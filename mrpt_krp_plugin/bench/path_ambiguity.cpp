@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/bench/path_ambiguity.h"
 
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +18,8 @@ void validatePathAmbiguityParams(const PathAmbiguityParams& params) {
   if (!(params.first_scan_margin >= 0.0 && params.first_scan_margin <= 1.0))
     throw std::invalid_argument("PathAmbiguityParams: first_scan_margin must be in [0, 1]");
   if (params.max_places < 1) throw std::invalid_argument("PathAmbiguityParams: max_places must be >= 1");
+  if (!(params.first_scan_search_m >= 0.0 && params.first_scan_search_deg >= 0.0))
+    throw std::invalid_argument("PathAmbiguityParams: the first-scan search must be >= 0");
   validateRivalTestParams(params.rival);
 }
 
@@ -37,6 +41,30 @@ PathAmbiguityCheck::PathAmbiguityCheck(std::shared_ptr<const mrpt::maps::COccupa
   if (!map_ || !matcher_) throw std::invalid_argument("PathAmbiguityCheck: needs a map and a matcher");
 }
 
+mrpt::math::TPose2D PathAmbiguityCheck::bestNear(const mrpt::obs::CObservation2DRangeScan& scan,
+                                               const mrpt::math::TPose2D& place) const {
+  const auto& r = params_.rival;
+  const int nxy = r.refine_step_m > 0.0 ? static_cast<int>(std::floor(params_.first_scan_search_m / r.refine_step_m)) : 0;
+  const int nphi = r.refine_step_deg > 0.0 ? static_cast<int>(std::floor(params_.first_scan_search_deg / r.refine_step_deg)) : 0;
+  std::optional<SeeThroughPenalty::Scan> charged;
+  if (see_through_) charged = see_through_->forScan(scan);
+  mrpt::math::TPose2D best = place;
+  double best_ll = -std::numeric_limits<double>::infinity();
+  for (int i = -nxy; i <= nxy; ++i)
+    for (int j = -nxy; j <= nxy; ++j)
+      for (int k = -nphi; k <= nphi; ++k) {
+        const mrpt::math::TPose2D p(place.x + i * r.refine_step_m, place.y + j * r.refine_step_m,
+                                    mrpt::math::wrapToPi(place.phi + k * r.refine_step_deg * M_PI / 180.0));
+        double ll = map_->computeObservationLikelihood(scan, mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)));
+        if (charged) ll -= charged->nats(p);
+        if (ll > best_ll) {
+          best_ll = ll;
+          best = p;
+        }
+      }
+  return best;
+}
+
 PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& truth,
                                         const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans) const {
   if (truth.empty() || truth.size() != scans.size())
@@ -56,7 +84,7 @@ PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& 
     return out;
   }
   std::vector<RivalTest> tests;
-  for (const auto& p : places) tests.emplace_back(p.pose, params_.rival);
+  for (const auto& p : places) tests.emplace_back(bestNear(*scans.front(), p.pose), params_.rival);
   for (size_t i = 0; i < scans.size(); ++i) {
     if (i > 0) {
       // The twin robot drives the truth's own path from its place.

@@ -26,12 +26,25 @@ struct PathAmbiguityParams {
   /// At most this many such places (the matcher's best ones, each at least its exclusion_m from
   /// the truth and from one another).
   int max_places = 8;
+  /// Each place comes from the matcher's grid, and the rival test's re-fitting climbs only to
+  /// the nearest optimum of the likelihood, which in a rack's comb of returns may not be the
+  /// place's best: on the first scan each place is first moved to the best pose of a dense grid
+  /// this far around it (steps of rival.refine_step_m and rival.refine_step_deg) [m], [deg].
+  double first_scan_search_m = 0.3;
+  double first_scan_search_deg = 3.0;
   /// Each place's path is weighed against the truth's with the filter's sensor model, scan
   /// after scan, as the look-alike guard weighs a rival; its decisive ratio is the verdict's bar.
-  RivalTestParams rival;
+  /// Each side is re-fitted with the see-through penalty in the fit: the truth is exact, a place
+  /// is not, and a few grazing beams would otherwise decide for the truth on noise.
+  RivalTestParams rival = [] {
+    RivalTestParams r;
+    r.refit_charges_see_through = true;
+    return r;
+  }();
 };
 
-/// Throws std::invalid_argument for a margin outside [0, 1] or fewer than one place.
+/// Throws std::invalid_argument for a margin outside [0, 1], fewer than one place or a negative
+/// first-scan search.
 void validatePathAmbiguityParams(const PathAmbiguityParams& params);
 
 enum class PathVerdict {
@@ -68,6 +81,10 @@ class PathAmbiguityCheck {
                       const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans) const;
 
  private:
+  /// `place` moved to the best pose, by the filter's sensor model and see-through penalty, of
+  /// the dense first-scan grid around it.
+  mrpt::math::TPose2D bestNear(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& place) const;
+
   std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map_;
   std::shared_ptr<const CorrelativeMatcher> matcher_;
   std::shared_ptr<const SeeThroughPenalty> see_through_;

@@ -24,7 +24,9 @@ void RivalTest::move(const mrpt::poses::CPose2D& increment) {
 }
 
 double RivalTest::refinedLogLikelihood(const mrpt::maps::COccupancyGridMap2D& map,
-                                       const mrpt::obs::CObservation2DRangeScan& scan, mrpt::math::TPose2D& pose) const {
+                                       const mrpt::obs::CObservation2DRangeScan& scan, mrpt::math::TPose2D& pose,
+                                       const SeeThroughPenalty::Scan* see_through) const {
+  const bool charge_in_fit = see_through && params_.refit_charges_see_through;
   const double step_rad = params_.refine_step_deg * M_PI / 180.0;
   double best = -std::numeric_limits<double>::infinity();
   mrpt::math::TPose2D best_pose = pose;
@@ -33,22 +35,22 @@ double RivalTest::refinedLogLikelihood(const mrpt::maps::COccupancyGridMap2D& ma
       for (int dphi = -1; dphi <= 1; ++dphi) {
         const mrpt::math::TPose2D p(pose.x + dx * params_.refine_step_m, pose.y + dy * params_.refine_step_m,
                                     mrpt::math::wrapToPi(pose.phi + dphi * step_rad));
-        const double ll = map.computeObservationLikelihood(scan, mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)));
+        double ll = map.computeObservationLikelihood(scan, mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)));
+        if (charge_in_fit) ll -= see_through->nats(p);
         if (ll > best) {
           best = ll;
           best_pose = p;
         }
       }
   pose = best_pose;
-  return best;
+  return see_through && !charge_in_fit ? best - see_through->nats(best_pose) : best;
 }
 
 RivalTest::Verdict RivalTest::update(const mrpt::maps::COccupancyGridMap2D& map,
                                      const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& tracked,
                                      const SeeThroughPenalty::Scan* see_through) {
   mrpt::math::TPose2D refined_tracked = tracked;
-  log_ratio_ += refinedLogLikelihood(map, scan, refined_tracked) - refinedLogLikelihood(map, scan, rival_);
-  if (see_through) log_ratio_ += see_through->nats(rival_) - see_through->nats(refined_tracked);
+  log_ratio_ += refinedLogLikelihood(map, scan, refined_tracked, see_through) - refinedLogLikelihood(map, scan, rival_, see_through);
   if (log_ratio_ >= params_.decisive_log_ratio) return Verdict::tracked_wins;
   if (log_ratio_ <= -params_.decisive_log_ratio) return Verdict::rival_wins;
   return Verdict::undecided;

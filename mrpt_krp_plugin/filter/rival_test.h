@@ -27,6 +27,13 @@ struct RivalTestParams {
   /// matcher's grid and is moved by odometry alone) [m], [deg].
   double refine_step_m = 0.05;
   double refine_step_deg = 1.0;
+  /// With a see-through penalty, re-fit each side to the likelihood less that penalty, not to
+  /// the likelihood alone. A beam that grazes a rack's corner sees through or not as the pose
+  /// moves a few centimetres, and one such beam costs as much as the likelihood field tells two
+  /// look-alike aisles apart by in a whole scan: fitted to the likelihood alone, whichever side
+  /// happens to graze loses on noise. false: the penalty is charged where the likelihood alone
+  /// puts each side (the guard before this parameter).
+  bool refit_charges_see_through = false;
 };
 
 /// Throws std::invalid_argument for a decisive ratio that is not positive or a negative
@@ -58,9 +65,11 @@ class RivalTest {
   double logRatio() const { return log_ratio_; }  ///< > 0 favours the tracked pose [nats]
 
  private:
-  /// The best log-likelihood over the refinement grid around `pose`; `pose` is moved there.
+  /// The best log-likelihood over the refinement grid around `pose`, less `see_through`'s
+  /// penalty where given (charged at the best pose, or over the grid with
+  /// refit_charges_see_through); `pose` is moved to the best.
   double refinedLogLikelihood(const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CObservation2DRangeScan& scan,
-                              mrpt::math::TPose2D& pose) const;
+                              mrpt::math::TPose2D& pose, const SeeThroughPenalty::Scan* see_through) const;
 
   mrpt::math::TPose2D rival_;
   RivalTestParams params_;

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <mrpt/math/wrap2pi.h>
+#include <mrpt/poses/CPose3D.h>
 
 #include <cmath>
 
 #include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/filter/see_through.h"
 #include "mrpt_krp_plugin/filter/sensor_model.h"
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
@@ -92,6 +94,47 @@ TEST(RivalTest, ARivalAFewCentimetresOffIsReFittedBeforeItIsJudged) {
   RivalTest not_refitted(offset, rigid);
   EXPECT_EQ(decide(not_refitted, room, kTruth, 8), RivalTest::Verdict::tracked_wins)
       << "log ratio " << not_refitted.logRatio() << " (refitted: " << refitted.logRatio() << ")";
+}
+
+// The best over the 3 x 3 x 3 refinement grid around `pose`: of the likelihood less the
+// see-through penalty (`charge_in_fit`), or of the likelihood, charged at its best pose.
+double bestOverGrid(const mrpt::maps::COccupancyGridMap2D& room, const mrpt::obs::CObservation2DRangeScan& scan,
+                    const SeeThroughPenalty::Scan& see_through, const mrpt::math::TPose2D& pose, bool charge_in_fit) {
+  const RivalTestParams p;
+  double best = -1e300, charged_at_best = 0.0;
+  for (int dx = -1; dx <= 1; ++dx)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dphi = -1; dphi <= 1; ++dphi) {
+        const mrpt::math::TPose2D q(pose.x + dx * p.refine_step_m, pose.y + dy * p.refine_step_m,
+                                    mrpt::math::wrapToPi(pose.phi + dphi * p.refine_step_deg * M_PI / 180.0));
+        const double ll = room.computeObservationLikelihood(scan, mrpt::poses::CPose3D(mrpt::poses::CPose2D(q)));
+        const double score = charge_in_fit ? ll - see_through.nats(q) : ll;
+        if (score > best) best = score, charged_at_best = charge_in_fit ? score : ll - see_through.nats(q);
+      }
+  return charged_at_best;
+}
+
+// The room's twin pose sees through the L wall's end: with the penalty in the fit, each side is
+// re-fitted to the likelihood less the penalty; without, the penalty is charged where the
+// likelihood alone puts it.
+TEST(RivalTest, WithTheChargeInTheFitEachSideIsFittedToTheWholeModel) {
+  const auto room = roomAsTheFilterSeesIt();
+  const SeeThroughPenalty penalty(room, SensorModelParams{});
+  const auto scan = scanAt(room, kTruth, 500);
+  const auto see_through = penalty.forScan(*scan);
+  ASSERT_GT(see_through.count(kTwin), 0) << "the twin pose sees through a wall";
+  std::vector<double> ratios;
+  for (const bool charge_in_fit : {false, true}) {
+    RivalTestParams p;
+    p.refit_charges_see_through = charge_in_fit;
+    RivalTest test(kTwin, p);
+    test.update(room, *scan, kTruth, &see_through);
+    const double expected = bestOverGrid(room, *scan, see_through, kTruth, charge_in_fit) -
+                            bestOverGrid(room, *scan, see_through, kTwin, charge_in_fit);
+    EXPECT_NEAR(test.logRatio(), expected, 1e-9) << "charge in fit: " << charge_in_fit;
+    ratios.push_back(test.logRatio());
+  }
+  EXPECT_GT(std::abs(ratios[1] - ratios[0]), 0.5) << "on this scan the two fits differ (148.3 against 146.8 nats)";
 }
 
 TEST(RivalTest, MovesTheRivalWithTheOdometry) {
