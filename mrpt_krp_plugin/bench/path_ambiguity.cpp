@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/bench/path_ambiguity.h"
 
-#include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
-#include <mrpt/poses/CPose3D.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +9,8 @@
 #include <optional>
 #include <stdexcept>
 #include <utility>
+
+#include "mrpt_krp_plugin/filter/pose_grid_fit.h"
 
 namespace krp {
 
@@ -42,27 +42,13 @@ PathAmbiguityCheck::PathAmbiguityCheck(std::shared_ptr<const mrpt::maps::COccupa
 }
 
 mrpt::math::TPose2D PathAmbiguityCheck::bestNear(const mrpt::obs::CObservation2DRangeScan& scan,
-                                               const mrpt::math::TPose2D& place) const {
+                                               const mrpt::math::TPose2D& place,
+                                               const SeeThroughPenalty::Scan* charge) const {
   const auto& r = params_.rival;
-  const int nxy = r.refine_step_m > 0.0 ? static_cast<int>(std::floor(params_.first_scan_search_m / r.refine_step_m)) : 0;
-  const int nphi = r.refine_step_deg > 0.0 ? static_cast<int>(std::floor(params_.first_scan_search_deg / r.refine_step_deg)) : 0;
-  std::optional<SeeThroughPenalty::Scan> charged;
-  if (see_through_) charged = see_through_->forScan(scan);
-  mrpt::math::TPose2D best = place;
-  double best_ll = -std::numeric_limits<double>::infinity();
-  for (int i = -nxy; i <= nxy; ++i)
-    for (int j = -nxy; j <= nxy; ++j)
-      for (int k = -nphi; k <= nphi; ++k) {
-        const mrpt::math::TPose2D p(place.x + i * r.refine_step_m, place.y + j * r.refine_step_m,
-                                    mrpt::math::wrapToPi(place.phi + k * r.refine_step_deg * M_PI / 180.0));
-        double ll = map_->computeObservationLikelihood(scan, mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)));
-        if (charged) ll -= charged->nats(p);
-        if (ll > best_ll) {
-          best_ll = ll;
-          best = p;
-        }
-      }
-  return best;
+  PoseGrid grid{r.refine_step_m, r.refine_step_deg, 0, 0};
+  if (r.refine_step_m > 0.0) grid.half_cells_xy = static_cast<int>(std::floor(params_.first_scan_search_m / r.refine_step_m));
+  if (r.refine_step_deg > 0.0) grid.half_cells_phi = static_cast<int>(std::floor(params_.first_scan_search_deg / r.refine_step_deg));
+  return bestPoseOnGrid(*map_, scan, place, grid, charge).pose;
 }
 
 PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& truth,
@@ -84,16 +70,18 @@ PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& 
     return out;
   }
   std::vector<RivalTest> tests;
-  for (const auto& p : places) tests.emplace_back(bestNear(*scans.front(), p.pose), params_.rival);
   for (size_t i = 0; i < scans.size(); ++i) {
-    if (i > 0) {
+    std::optional<SeeThroughPenalty::Scan> charged;
+    if (see_through_) charged = see_through_->forScan(*scans[i]);
+    const SeeThroughPenalty::Scan* charge = charged ? &*charged : nullptr;
+    if (i == 0) {
+      for (const auto& p : places) tests.emplace_back(bestNear(*scans[i], p.pose, charge), params_.rival);
+    } else {
       // The twin robot drives the truth's own path from its place.
       const auto increment = mrpt::poses::CPose2D(truth[i]) - mrpt::poses::CPose2D(truth[i - 1]);
       for (auto& t : tests) t.move(increment);
     }
-    std::optional<SeeThroughPenalty::Scan> charged;
-    if (see_through_) charged = see_through_->forScan(*scans[i]);
-    for (auto& t : tests) t.update(*map_, *scans[i], truth[i], charged ? &*charged : nullptr);
+    for (auto& t : tests) t.update(*map_, *scans[i], truth[i], charge);
   }
   size_t closest = 0;
   for (size_t k = 1; k < tests.size(); ++k)

@@ -81,9 +81,10 @@ class PathAmbiguityCheck {
                       const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans) const;
 
  private:
-  /// `place` moved to the best pose, by the filter's sensor model and see-through penalty, of
-  /// the dense first-scan grid around it.
-  mrpt::math::TPose2D bestNear(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& place) const;
+  /// `place` moved to the best pose, by the filter's sensor model less `charge` (the scan's
+  /// see-through penalty, null without one), of the dense first-scan grid around it.
+  mrpt::math::TPose2D bestNear(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& place,
+                               const SeeThroughPenalty::Scan* charge) const;
 
   std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map_;
   std::shared_ptr<const CorrelativeMatcher> matcher_;

@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/filter/rival_test.h"
 
-#include <mrpt/math/wrap2pi.h>
-#include <mrpt/poses/CPose3D.h>
-
-#include <limits>
 #include <stdexcept>
+
+#include "mrpt_krp_plugin/filter/pose_grid_fit.h"
 
 namespace krp {
 
@@ -27,23 +25,10 @@ double RivalTest::refinedLogLikelihood(const mrpt::maps::COccupancyGridMap2D& ma
                                        const mrpt::obs::CObservation2DRangeScan& scan, mrpt::math::TPose2D& pose,
                                        const SeeThroughPenalty::Scan* see_through) const {
   const bool charge_in_fit = see_through && params_.refit_charges_see_through;
-  const double step_rad = params_.refine_step_deg * M_PI / 180.0;
-  double best = -std::numeric_limits<double>::infinity();
-  mrpt::math::TPose2D best_pose = pose;
-  for (int dx = -1; dx <= 1; ++dx)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dphi = -1; dphi <= 1; ++dphi) {
-        const mrpt::math::TPose2D p(pose.x + dx * params_.refine_step_m, pose.y + dy * params_.refine_step_m,
-                                    mrpt::math::wrapToPi(pose.phi + dphi * step_rad));
-        double ll = map.computeObservationLikelihood(scan, mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)));
-        if (charge_in_fit) ll -= see_through->nats(p);
-        if (ll > best) {
-          best = ll;
-          best_pose = p;
-        }
-      }
-  pose = best_pose;
-  return see_through && !charge_in_fit ? best - see_through->nats(best_pose) : best;
+  const PoseGrid grid{params_.refine_step_m, params_.refine_step_deg, 1, 1};
+  const auto fit = bestPoseOnGrid(map, scan, pose, grid, charge_in_fit ? see_through : nullptr);
+  pose = fit.pose;
+  return see_through && !charge_in_fit ? fit.score - see_through->nats(fit.pose) : fit.score;
 }
 
 RivalTest::Verdict RivalTest::update(const mrpt::maps::COccupancyGridMap2D& map,
