@@ -62,6 +62,8 @@ static int run(int argc, char** argv) {
                  "classifier's surest)", std::to_string(krp::RelocalizerParams{}.top_turns)},
                 {"search-zones", "N", "seeded: when the keypoints give no credible pose, the correlative matcher "
                  "searches this many of the classifier's most likely zones (0 = no zone search)", "1"},
+                {"cross-check-places", "N", "seeded: other places the look-alike cross-check proposes per round "
+                 "(each another branch-and-bound pass)", std::to_string(krp::CrossCheckParams{}.places)},
                 {"guard-ambiguity-margin", "S", "methods with the look-alike guard: a place scoring within this of the "
                  "filter's mean (matcher score) makes the estimate ambiguous, so not confident (0 = only places that "
                  "fit at least as well)", krp::formatNumber(krp::LookAlikeGuardParams{}.ambiguity_margin)},
@@ -78,9 +80,9 @@ static int run(int argc, char** argv) {
                 {"guard-max-search-nodes", "N", "methods with the look-alike guard: nodes one look-alike search charged "
                  "for see-through may score before it answers with the best place charged so far (0 = no limit)",
                  std::to_string(krp::LookAlikeGuardParams{}.max_search_nodes)},
-                {"guard-refit-charges-see-through", "", "methods with the look-alike guard: the rival test re-fits "
-                 "each side to the likelihood less the see-through penalty, not to the likelihood alone "
-                 "(RivalTestParams::refit_charges_see_through)", ""},
+                {"guard-refit-ignores-see-through", "", "methods with the look-alike guard: the rival test re-fits "
+                 "each side to the likelihood alone and charges the see-through penalty where that puts it "
+                 "(RivalTestParams::refit_charges_see_through false; the guard before it was the default)", ""},
                 {"min-localized-fit", "F", "relocalizing methods: the first scan's best hypothesis must explain at least "
                  "this share of its returns to be called localized (0 = off)",
                  krp::formatNumber(krp::HypothesisRankingParams{}.min_localized_fit_fraction)},
@@ -140,6 +142,9 @@ static int run(int argc, char** argv) {
   const auto search_zones = args.integer("search-zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
   cfg.method_settings.relocalizer.zone_search.zones = static_cast<int>(search_zones);
+  const auto cross_check_places = args.integer("cross-check-places");
+  if (cross_check_places < 1) throw krp::InputError("--cross-check-places", "must be 1 or more");
+  cfg.method_settings.relocalizer.cross_check.places = static_cast<int>(cross_check_places);
   cfg.method_settings.guard.ambiguity_margin = args.number("guard-ambiguity-margin");
   if (!(cfg.method_settings.guard.ambiguity_margin >= 0.0 && cfg.method_settings.guard.ambiguity_margin <= 1.0))
     throw krp::InputError("--guard-ambiguity-margin", "must be in [0, 1]");
@@ -149,7 +154,7 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.watch_rejected = !args.flag("guard-forget-rejected");
   cfg.mcl.see_through.enabled = !args.flag("no-see-through");
   cfg.path_ambiguity = args.flag("path-ambiguity");
-  cfg.method_settings.guard.rival_test.refit_charges_see_through = args.flag("guard-refit-charges-see-through");
+  cfg.method_settings.guard.rival_test.refit_charges_see_through = !args.flag("guard-refit-ignores-see-through");
   cfg.path_ambiguity_params.max_places = static_cast<int>(args.integer("path-ambiguity-places"));
   if (cfg.path_ambiguity_params.max_places < 1) throw krp::InputError("--path-ambiguity-places", "must be >= 1");
   cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");

@@ -34,13 +34,10 @@ struct PathAmbiguityParams {
   double first_scan_search_deg = 3.0;
   /// Each place's path is weighed against the truth's with the filter's sensor model, scan
   /// after scan, as the look-alike guard weighs a rival; its decisive ratio is the verdict's bar.
-  /// Each side is re-fitted with the see-through penalty in the fit: the truth is exact, a place
-  /// is not, and a few grazing beams would otherwise decide for the truth on noise.
-  RivalTestParams rival = [] {
-    RivalTestParams r;
-    r.refit_charges_see_through = true;
-    return r;
-  }();
+  /// Each side is re-fitted with the see-through penalty in the fit (the test's default): the
+  /// truth is exact, a place is not, and a few grazing beams would otherwise decide for the
+  /// truth on noise.
+  RivalTestParams rival;
 };
 
 /// Throws std::invalid_argument for a margin outside [0, 1], fewer than one place or a negative

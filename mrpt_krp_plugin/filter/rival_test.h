@@ -31,9 +31,10 @@ struct RivalTestParams {
   /// the likelihood alone. A beam that grazes a rack's corner sees through or not as the pose
   /// moves a few centimetres, and one such beam costs as much as the likelihood field tells two
   /// look-alike aisles apart by in a whole scan: fitted to the likelihood alone, whichever side
-  /// happens to graze loses on noise. false: the penalty is charged where the likelihood alone
-  /// puts each side (the guard before this parameter).
-  bool refit_charges_see_through = false;
+  /// happens to graze loses on noise (the warehouse's trial 8 was decided for the wrong aisle
+  /// that way). false: the penalty is charged where the likelihood alone puts each side (the
+  /// guard's rival test until this became the default; krp-bench --guard-refit-ignores-see-through).
+  bool refit_charges_see_through = true;
 };
 
 /// Throws std::invalid_argument for a decisive ratio that is not positive or a negative
