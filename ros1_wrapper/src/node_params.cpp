@@ -94,6 +94,7 @@ const std::map<std::string, Reader>& readers() {
       {"look_alike_watch_rejected", boolean(&NodeParams::look_alike_watch_rejected)},
       {"see_through_penalty", boolean(&NodeParams::see_through_penalty)},
       {"look_alike_search_charges_see_through", boolean(&NodeParams::look_alike_search_charges_see_through)},
+      {"look_alike_refit_charges_see_through", boolean(&NodeParams::look_alike_refit_charges_see_through)},
       {"look_alike_max_search_nodes", integer(&NodeParams::look_alike_max_search_nodes, 0, kMaxSearchNodes)},
   };
   return r;
@@ -178,6 +179,7 @@ LookAlikeGuardParams NodeParams::lookAlikeGuard() const {
   g.min_fit_fraction = look_alike_min_fit_fraction;
   g.watch_rejected = look_alike_watch_rejected;
   g.search_charges_see_through = look_alike_search_charges_see_through;
+  g.rival_test.refit_charges_see_through = look_alike_refit_charges_see_through;
   g.max_search_nodes = look_alike_max_search_nodes;
   return g;
 }

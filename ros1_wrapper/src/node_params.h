@@ -60,6 +60,9 @@ struct NodeParams {
   /// `track`: the look-alike search charges each place for the returns it would see through
   /// (with see_through_penalty; LookAlikeGuardParams::search_charges_see_through)
   bool look_alike_search_charges_see_through = LookAlikeGuardParams{}.search_charges_see_through;
+  /// `track`: the rival test re-fits the pose and its look-alike to each scan with the see-through
+  /// charge in the fit (with see_through_penalty; RivalTestParams::refit_charges_see_through)
+  bool look_alike_refit_charges_see_through = RivalTestParams{}.refit_charges_see_through;
   /// `track`: nodes one charged look-alike search may score before it answers with the best place
   /// charged so far (0 = no limit; LookAlikeGuardParams::max_search_nodes)
   int look_alike_max_search_nodes = static_cast<int>(LookAlikeGuardParams{}.max_search_nodes);

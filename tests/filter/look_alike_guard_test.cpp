@@ -175,9 +175,9 @@ TEST(LookAlikeGuard, ReportsARightFilterAsAmbiguousUntilTheScansTellTheTwinApart
 /// One krp-bench trial, rebuilt from its seeds (trials.csv: trial_seed, filter_seed) as the bench
 /// runs it, so a method can be replayed on it with other settings.
 struct BenchTrialReplay {
-  BenchTrialReplay(const std::string& world_name, uint64_t trial_seed, uint64_t filter_seed, int steps_after_first_scan)
-      : world_name(world_name),
-        world(readWorld(std::string(KRP_SOURCE_DIR) + "/sim_worlds/" + world_name + "/" + world_name + ".world.yaml")),
+  BenchTrialReplay(const std::string& name, uint64_t trial_seed, uint64_t filter_seed, int steps_after_first_scan)
+      : world_name(name),
+        world(readWorld(std::string(KRP_SOURCE_DIR) + "/sim_worlds/" + name + "/" + name + ".world.yaml")),
         map(loadOccupancyMap(world.map_path).grid) {
     TrialParams trial_params;
     trial_params.steps = steps_after_first_scan;
