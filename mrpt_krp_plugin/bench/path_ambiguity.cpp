@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/bench/path_ambiguity.h"
 
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <algorithm>
@@ -10,7 +11,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "mrpt_krp_plugin/filter/pose_grid_fit.h"
 
 namespace krp {
 
@@ -21,6 +21,8 @@ void validatePathAmbiguityParams(const PathAmbiguityParams& params) {
   if (!(params.first_scan_search_m >= 0.0 && params.first_scan_search_deg >= 0.0))
     throw std::invalid_argument("PathAmbiguityParams: the first-scan search must be >= 0");
   validateRivalTestParams(params.rival);
+  if (!(params.truth_offset_steps >= 0.0 && params.truth_offset_steps <= 0.5))
+    throw std::invalid_argument("PathAmbiguityParams: truth_offset_steps must be in [0, 0.5]");
 }
 
 std::string toString(PathVerdict verdict) {
@@ -41,14 +43,13 @@ PathAmbiguityCheck::PathAmbiguityCheck(std::shared_ptr<const mrpt::maps::COccupa
   if (!map_ || !matcher_) throw std::invalid_argument("PathAmbiguityCheck: needs a map and a matcher");
 }
 
-mrpt::math::TPose2D PathAmbiguityCheck::bestNear(const mrpt::obs::CObservation2DRangeScan& scan,
-                                               const mrpt::math::TPose2D& place,
-                                               const SeeThroughPenalty::Scan* charge) const {
-  const auto& r = params_.rival;
-  PoseGrid grid{r.refine_step_m, r.refine_step_deg, 0, 0};
-  if (r.refine_step_m > 0.0) grid.half_cells_xy = static_cast<int>(std::floor(params_.first_scan_search_m / r.refine_step_m));
-  if (r.refine_step_deg > 0.0) grid.half_cells_phi = static_cast<int>(std::floor(params_.first_scan_search_deg / r.refine_step_deg));
-  return bestPoseOnGrid(*map_, scan, place, grid, charge).pose;
+PlaceTrackerParams PathAmbiguityCheck::trackerParams() const {
+  PlaceTrackerParams t;
+  t.first_scan_search_m = params_.first_scan_search_m;
+  t.first_scan_search_deg = params_.first_scan_search_deg;
+  t.refine_step_m = params_.rival.refine_step_m;
+  t.refine_step_deg = params_.rival.refine_step_deg;
+  return t;
 }
 
 PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& truth,
@@ -69,25 +70,31 @@ PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& 
     out.closest_log_ratio = std::numeric_limits<double>::infinity();
     return out;
   }
-  std::vector<RivalTest> tests;
+  // The truth first: the tracker keeps its places in order.
+  const auto& r = params_.rival;
+  const double off = params_.truth_offset_steps;
+  std::vector<mrpt::math::TPose2D> starts{{start.x + off * r.refine_step_m, start.y + off * r.refine_step_m,
+                                           mrpt::math::wrapToPi(start.phi + off * r.refine_step_deg * M_PI / 180.0)}};
+  for (const auto& p : places) starts.push_back(p.pose);
+  PlaceTracker tracker(trackerParams());
   for (size_t i = 0; i < scans.size(); ++i) {
     std::optional<SeeThroughPenalty::Scan> charged;
     if (see_through_) charged = see_through_->forScan(*scans[i]);
     const SeeThroughPenalty::Scan* charge = charged ? &*charged : nullptr;
     if (i == 0) {
-      for (const auto& p : places) tests.emplace_back(bestNear(*scans[i], p.pose, charge), params_.rival);
+      tracker.start(*map_, *scans[i], starts, charge);
     } else {
       // The twin robot drives the truth's own path from its place.
-      const auto increment = mrpt::poses::CPose2D(truth[i]) - mrpt::poses::CPose2D(truth[i - 1]);
-      for (auto& t : tests) t.move(increment);
+      tracker.move(mrpt::poses::CPose2D(truth[i]) - mrpt::poses::CPose2D(truth[i - 1]));
+      tracker.update(*map_, *scans[i], charge);
     }
-    for (auto& t : tests) t.update(*map_, *scans[i], truth[i], charge);
   }
-  size_t closest = 0;
-  for (size_t k = 1; k < tests.size(); ++k)
-    if (tests[k].logRatio() < tests[closest].logRatio()) closest = k;
-  out.closest_log_ratio = tests[closest].logRatio();
-  out.closest_distance_m = std::hypot(places[closest].pose.x - start.x, places[closest].pose.y - start.y);
+  const auto& weighed = tracker.places();
+  size_t closest = 1;
+  for (size_t k = 2; k < weighed.size(); ++k)
+    if (weighed[k].log_likelihood > weighed[closest].log_likelihood) closest = k;
+  out.closest_log_ratio = weighed.front().log_likelihood - weighed[closest].log_likelihood;
+  out.closest_distance_m = std::hypot(places[closest - 1].pose.x - start.x, places[closest - 1].pose.y - start.y);
   const double bar = params_.rival.decisive_log_ratio;
   out.verdict = out.closest_log_ratio >= bar    ? PathVerdict::told_apart
                 : out.closest_log_ratio <= -bar ? PathVerdict::misleading
