@@ -11,16 +11,14 @@
 #include <stdexcept>
 #include <utility>
 
-
 namespace krp {
 
 void validatePathAmbiguityParams(const PathAmbiguityParams& params) {
   if (!(params.first_scan_margin >= 0.0 && params.first_scan_margin <= 1.0))
     throw std::invalid_argument("PathAmbiguityParams: first_scan_margin must be in [0, 1]");
   if (params.max_places < 1) throw std::invalid_argument("PathAmbiguityParams: max_places must be >= 1");
-  if (!(params.first_scan_search_m >= 0.0 && params.first_scan_search_deg >= 0.0))
-    throw std::invalid_argument("PathAmbiguityParams: the first-scan search must be >= 0");
-  validateRivalTestParams(params.rival);
+  validatePlaceTrackerParams(params.tracking);
+  if (!(params.decisive_log_ratio > 0.0)) throw std::invalid_argument("PathAmbiguityParams: decisive_log_ratio must be > 0");
   if (!(params.truth_offset_steps >= 0.0 && params.truth_offset_steps <= 0.5))
     throw std::invalid_argument("PathAmbiguityParams: truth_offset_steps must be in [0, 0.5]");
 }
@@ -43,15 +41,6 @@ PathAmbiguityCheck::PathAmbiguityCheck(std::shared_ptr<const mrpt::maps::COccupa
   if (!map_ || !matcher_) throw std::invalid_argument("PathAmbiguityCheck: needs a map and a matcher");
 }
 
-PlaceTrackerParams PathAmbiguityCheck::trackerParams() const {
-  PlaceTrackerParams t;
-  t.first_scan_search_m = params_.first_scan_search_m;
-  t.first_scan_search_deg = params_.first_scan_search_deg;
-  t.refine_step_m = params_.rival.refine_step_m;
-  t.refine_step_deg = params_.rival.refine_step_deg;
-  return t;
-}
-
 PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& truth,
                                         const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans) const {
   if (truth.empty() || truth.size() != scans.size())
@@ -71,12 +60,13 @@ PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& 
     return out;
   }
   // The truth first: the tracker keeps its places in order.
-  const auto& r = params_.rival;
+  const auto& steps = params_.tracking;
   const double off = params_.truth_offset_steps;
-  std::vector<mrpt::math::TPose2D> starts{{start.x + off * r.refine_step_m, start.y + off * r.refine_step_m,
-                                           mrpt::math::wrapToPi(start.phi + off * r.refine_step_deg * M_PI / 180.0)}};
+  std::vector<mrpt::math::TPose2D> starts{
+      {start.x + off * steps.refine_step_m, start.y + off * steps.refine_step_m,
+       mrpt::math::wrapToPi(start.phi + off * steps.refine_step_deg * M_PI / 180.0)}};
   for (const auto& p : places) starts.push_back(p.pose);
-  PlaceTracker tracker(trackerParams());
+  PlaceTracker tracker(params_.tracking);
   for (size_t i = 0; i < scans.size(); ++i) {
     std::optional<SeeThroughPenalty::Scan> charged;
     if (see_through_) charged = see_through_->forScan(*scans[i]);
@@ -95,7 +85,7 @@ PathAmbiguity PathAmbiguityCheck::check(const std::vector<mrpt::math::TPose2D>& 
     if (weighed[k].log_likelihood > weighed[closest].log_likelihood) closest = k;
   out.closest_log_ratio = weighed.front().log_likelihood - weighed[closest].log_likelihood;
   out.closest_distance_m = std::hypot(places[closest - 1].pose.x - start.x, places[closest - 1].pose.y - start.y);
-  const double bar = params_.rival.decisive_log_ratio;
+  const double bar = params_.decisive_log_ratio;
   out.verdict = out.closest_log_ratio >= bar    ? PathVerdict::told_apart
                 : out.closest_log_ratio <= -bar ? PathVerdict::misleading
                                                 : PathVerdict::ambiguous;

@@ -27,19 +27,14 @@ struct PathAmbiguityParams {
   /// At most this many such places (the matcher's best ones, each at least its exclusion_m from
   /// the truth and from one another).
   int max_places = 8;
-  /// Each place comes from the matcher's grid, and the rival test's re-fitting climbs only to
-  /// the nearest optimum of the likelihood, which in a rack's comb of returns may not be the
-  /// place's best: on the first scan each place is first moved to the best pose of a dense grid
-  /// this far around it (steps of rival.refine_step_m and rival.refine_step_deg) [m], [deg].
-  double first_scan_search_m = 0.3;
-  double first_scan_search_deg = 3.0;
-  /// Each place's path is weighed against the truth's with the filter's sensor model, scan
-  /// after scan, as the look-alike guard weighs a rival: re-fitted on its 3 x 3 x 3 grid of
-  /// refine steps, with the see-through penalty in the fit; its decisive ratio is the verdict's
-  /// bar.
-  RivalTestParams rival;
-  /// The truth is weighed as the places are (PlaceTracker: placed on the first scan's grid,
-  /// then moved and re-fitted), started this share of a refine step off the exact pose in x, y
+  /// How the truth and each place are placed on the first scan, moved along the path and
+  /// re-fitted to every scan with the filter's sensor model and its see-through penalty in the
+  /// fit (PlaceTracker).
+  PlaceTrackerParams tracking;
+  /// The truth's lead over every place, summed over the path, that tells it apart (and a
+  /// place's lead that makes the trial misleading): the look-alike guard's bar [nats].
+  double decisive_log_ratio = RivalTestParams{}.decisive_log_ratio;
+  /// The truth is weighed as the places are (`tracking`), started this share of a refine step off the exact pose in x, y
   /// and heading: a place found on the matcher's grid is never exactly on its own true
   /// equivalent, and a quarter step is the mean error of a pose rounded to the grid. Weighed at
   /// its exact pose instead, the truth gained a few nats a scan on every place (in the
@@ -47,8 +42,9 @@ struct PathAmbiguityParams {
   double truth_offset_steps = 0.25;
 };
 
-/// Throws std::invalid_argument for a margin outside [0, 1], fewer than one place, a negative
-/// first-scan search or a truth offset outside [0, 0.5].
+/// Throws std::invalid_argument for a margin outside [0, 1], fewer than one place, tracking
+/// settings validatePlaceTrackerParams refuses, a decisive ratio that is not positive or a truth
+/// offset outside [0, 0.5].
 void validatePathAmbiguityParams(const PathAmbiguityParams& params);
 
 enum class PathVerdict {
@@ -85,10 +81,6 @@ class PathAmbiguityCheck {
                       const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans) const;
 
  private:
-  /// The tracker that weighs the truth and the places alike: the first-scan grid and the
-  /// refinement steps of params_.
-  PlaceTrackerParams trackerParams() const;
-
   std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map_;
   std::shared_ptr<const CorrelativeMatcher> matcher_;
   std::shared_ptr<const SeeThroughPenalty> see_through_;

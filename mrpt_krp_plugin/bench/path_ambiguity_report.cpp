@@ -57,7 +57,7 @@ std::string pathAmbiguitySection(const std::vector<PathAmbiguitySplit>& splits, 
     << " of the truth's are each driven along the truth's own path, and weighed against it scan after scan with "
        "the filter's sensor model (and its see-through penalty when on), each side re-fitted to every scan, as "
        "the look-alike guard weighs a rival. *Told apart*: the truth leads every such place by at least "
-    << formatNumber(params.rival.decisive_log_ratio)
+    << formatNumber(params.decisive_log_ratio)
     << " nats over the whole path. *Ambiguous*: some place stays within that, so the trial's scans cannot say "
        "which of the two the robot is at, and a method that is right and confident there is right by luck. "
        "*Misleading*: some place explains the path better than the truth by as much (unmapped clutter). Columns "

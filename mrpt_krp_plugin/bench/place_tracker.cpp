@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/bench/place_tracker.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 #include "mrpt_krp_plugin/filter/pose_grid_fit.h"
@@ -54,21 +52,6 @@ void PlaceTracker::update(const mrpt::maps::COccupancyGridMap2D& map, const mrpt
     p.pose = fit.pose;
     p.log_likelihood += fit.score;
   }
-}
-
-const TrackedPlace& PlaceTracker::leader() const {
-  if (places_.empty()) throw std::logic_error("PlaceTracker::leader: no place is tracked");
-  return *std::max_element(places_.begin(), places_.end(), [](const TrackedPlace& a, const TrackedPlace& b) {
-    return a.log_likelihood < b.log_likelihood;
-  });
-}
-
-double PlaceTracker::leadOverRunnerUp() const {
-  const TrackedPlace& top = leader();
-  double runner_up = -std::numeric_limits<double>::infinity();
-  for (const auto& p : places_)
-    if (&p != &top) runner_up = std::max(runner_up, p.log_likelihood);
-  return top.log_likelihood - runner_up;
 }
 
 }  // namespace krp

@@ -60,10 +60,6 @@ class PlaceTracker {
               const SeeThroughPenalty::Scan* see_through);
 
   const std::vector<TrackedPlace>& places() const { return places_; }
-  /// The place with the most evidence. Throws std::logic_error when none is tracked.
-  const TrackedPlace& leader() const;
-  /// The leader's lead over the next best place [nats]; +inf when it is alone.
-  double leadOverRunnerUp() const;
 
  private:
   PlaceTrackerParams params_;

@@ -57,7 +57,7 @@ TEST(PathAmbiguity, APathTheTwinRoomRepeatsIsAmbiguous) {
   EXPECT_EQ(verdict.verdict, PathVerdict::ambiguous);
   EXPECT_GE(verdict.places, 1);
   EXPECT_NEAR(verdict.closest_distance_m, test::twinRoomsShiftM(), 0.3) << "the closest place is the twin room's";
-  EXPECT_LT(std::abs(verdict.closest_log_ratio), PathAmbiguityParams{}.rival.decisive_log_ratio);
+  EXPECT_LT(std::abs(verdict.closest_log_ratio), PathAmbiguityParams{}.decisive_log_ratio);
 }
 
 TEST(PathAmbiguity, APathInARoomWithoutTwinIsToldApart) {
@@ -65,7 +65,7 @@ TEST(PathAmbiguity, APathInARoomWithoutTwinIsToldApart) {
   const auto path = drive();
   const auto verdict = checkOn(room).check(path, scansAlong(room, path));
   EXPECT_EQ(verdict.verdict, PathVerdict::told_apart);
-  EXPECT_GE(verdict.closest_log_ratio, PathAmbiguityParams{}.rival.decisive_log_ratio);
+  EXPECT_GE(verdict.closest_log_ratio, PathAmbiguityParams{}.decisive_log_ratio);
 }
 
 // The same scans, with the truth said to be the room's 180 deg twin pose: the place the scans
@@ -77,7 +77,7 @@ TEST(PathAmbiguity, ScansThatFitAnotherPlaceBetterMislead) {
   for (const auto& p : path) claimed.emplace_back(9.0 - p.x, 7.0 - p.y, mrpt::math::wrapToPi(p.phi + M_PI));
   const auto verdict = checkOn(room).check(claimed, scansAlong(room, path));
   EXPECT_EQ(verdict.verdict, PathVerdict::misleading);
-  EXPECT_LE(verdict.closest_log_ratio, -PathAmbiguityParams{}.rival.decisive_log_ratio);
+  EXPECT_LE(verdict.closest_log_ratio, -PathAmbiguityParams{}.decisive_log_ratio);
 }
 
 TEST(PathAmbiguity, RefusesBadParametersAndPathsThatDoNotMatchTheScans) {
@@ -89,7 +89,7 @@ TEST(PathAmbiguity, RefusesBadParametersAndPathsThatDoNotMatchTheScans) {
   p.max_places = 0;
   EXPECT_THROW(validatePathAmbiguityParams(p), std::invalid_argument);
   p = {};
-  p.rival.decisive_log_ratio = 0.0;
+  p.decisive_log_ratio = 0.0;
   EXPECT_THROW(validatePathAmbiguityParams(p), std::invalid_argument);
   const auto path = drive();
   auto scans = scansAlong(room, path);
