@@ -33,7 +33,8 @@ static int run(int argc, char** argv) {
                 {"methods", "A,B", "methods to compare", "uniform-mcl,amcl-kld"},
                 {"trials", "N", "trials per world and lidar", "10"},
                 {"only-trials", "I,J", "run only these trials (0-based, below --trials) with the seeds they have in "
-                 "the full run: replays one trial of a report", ""},
+                 "the full run: replays one trial of a report, given the run's --seed, --worlds and --lidars in the "
+                 "same order (a trial's seed depends on its world's and lidar's place in those lists)", ""},
                 {"steps", "N", "motion steps per trial after the first scan", "40"},
                 {"kidnap-at", "STEP", "carry the robot elsewhere at this step (1..steps) and run every method with "
                  "kidnap detection; the report adds a kidnap table (0 = no kidnap)", "0"},
