@@ -84,6 +84,10 @@ static int run(int argc, char** argv) {
                 {"guard-refit-ignores-see-through", "", "methods with the look-alike guard: the rival test re-fits "
                  "each side to the likelihood alone and charges the see-through penalty where that puts it "
                  "(RivalTestParams::refit_charges_see_through false; the guard before it was the default)", ""},
+                {"guard-rival-refinements", "N", "methods with the look-alike guard: finer grids, each of half the "
+                 "last one's steps, on which the rival test re-fits each side after its 5 cm / 1 deg grid "
+                 "(RivalTestParams::finer_refinements; 0 = the test before that parameter)",
+                 std::to_string(krp::RivalTestParams{}.finer_refinements)},
                 {"min-localized-fit", "F", "relocalizing methods: the first scan's best hypothesis must explain at least "
                  "this share of its returns to be called localized (0 = off)",
                  krp::formatNumber(krp::HypothesisRankingParams{}.min_localized_fit_fraction)},
@@ -156,6 +160,9 @@ static int run(int argc, char** argv) {
   cfg.mcl.see_through.enabled = !args.flag("no-see-through");
   cfg.path_ambiguity = args.flag("path-ambiguity");
   cfg.method_settings.guard.rival_test.refit_charges_see_through = !args.flag("guard-refit-ignores-see-through");
+  cfg.method_settings.guard.rival_test.finer_refinements = static_cast<int>(args.integer("guard-rival-refinements"));
+  if (cfg.method_settings.guard.rival_test.finer_refinements < 0)
+    throw krp::InputError("--guard-rival-refinements", "must be 0 or more");
   cfg.path_ambiguity_params.max_places = static_cast<int>(args.integer("path-ambiguity-places"));
   if (cfg.path_ambiguity_params.max_places < 1) throw krp::InputError("--path-ambiguity-places", "must be >= 1");
   cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");

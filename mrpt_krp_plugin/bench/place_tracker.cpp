@@ -40,15 +40,9 @@ void PlaceTracker::move(const mrpt::poses::CPose2D& increment) {
 
 void PlaceTracker::update(const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CObservation2DRangeScan& scan,
                           const SeeThroughPenalty::Scan* see_through) {
+  const PoseGrid grid{params_.refine_step_m, params_.refine_step_deg, 1, 1};
   for (auto& p : places_) {
-    PoseGrid grid{params_.refine_step_m, params_.refine_step_deg, 1, 1};
-    PoseGridFit fit{p.pose, 0.0};
-    for (int level = 0; level <= params_.finer_refinements; ++level) {
-      fit = bestPoseOnGrid(map, scan, fit.pose, grid, see_through);
-      // The next grid spans the half step either side of this one's best.
-      grid.step_m /= 2.0;
-      grid.step_deg /= 2.0;
-    }
+    const auto fit = refinedPoseOnGrids(map, scan, p.pose, grid, params_.finer_refinements, see_through);
     p.pose = fit.pose;
     p.log_likelihood += fit.score;
   }

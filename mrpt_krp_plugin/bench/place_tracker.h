@@ -23,11 +23,8 @@ struct PlaceTrackerParams {
   /// with the see-through penalty in the fit [m], [deg] ...
   double refine_step_m = 0.05;
   double refine_step_deg = 1.0;
-  /// ... then on as many more such grids, each of half the last one's steps (so that it spans
-  /// the half step either side of the last one's best, where the optimum lies). The likelihood
-  /// field is sharp: a place held a few centimetres or half a degree off its best, as a grid of
-  /// the steps above holds it, loses several nats a scan at 12 m ranges, more than the scans of
-  /// two look-alike places differ by. 0: the first grid only.
+  /// ... then on as many more such grids, each of half the last one's steps
+  /// (refinedPoseOnGrids: why). 0: the first grid only.
   int finer_refinements = 3;
 };
 

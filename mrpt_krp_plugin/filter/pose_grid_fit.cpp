@@ -25,4 +25,16 @@ PoseGridFit bestPoseOnGrid(const mrpt::maps::COccupancyGridMap2D& map, const mrp
   return best;
 }
 
+PoseGridFit refinedPoseOnGrids(const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CObservation2DRangeScan& scan,
+                               const mrpt::math::TPose2D& start, PoseGrid grid, int finer_refinements,
+                               const SeeThroughPenalty::Scan* charge) {
+  PoseGridFit fit = bestPoseOnGrid(map, scan, start, grid, charge);
+  for (int level = 0; level < finer_refinements; ++level) {
+    grid.step_m /= 2.0;
+    grid.step_deg /= 2.0;
+    fit = bestPoseOnGrid(map, scan, fit.pose, grid, charge);
+  }
+  return fit;
+}
+
 }  // namespace krp

@@ -11,6 +11,7 @@ void validateRivalTestParams(const RivalTestParams& params) {
   if (!(params.decisive_log_ratio > 0.0)) throw std::invalid_argument("RivalTest: decisive_log_ratio must be > 0");
   if (params.refine_step_m < 0.0 || params.refine_step_deg < 0.0)
     throw std::invalid_argument("RivalTest: refinement steps must be >= 0");
+  if (params.finer_refinements < 0) throw std::invalid_argument("RivalTest: finer_refinements must be 0 or more");
 }
 
 RivalTest::RivalTest(const mrpt::math::TPose2D& rival, RivalTestParams params) : rival_(rival), params_(params) {
@@ -26,7 +27,7 @@ double RivalTest::refinedLogLikelihood(const mrpt::maps::COccupancyGridMap2D& ma
                                        const SeeThroughPenalty::Scan* see_through) const {
   const bool charge_in_fit = see_through && params_.refit_charges_see_through;
   const PoseGrid grid{params_.refine_step_m, params_.refine_step_deg, 1, 1};
-  const auto fit = bestPoseOnGrid(map, scan, pose, grid, charge_in_fit ? see_through : nullptr);
+  const auto fit = refinedPoseOnGrids(map, scan, pose, grid, params_.finer_refinements, charge_in_fit ? see_through : nullptr);
   pose = fit.pose;
   return see_through && !charge_in_fit ? fit.score - see_through->nats(fit.pose) : fit.score;
 }

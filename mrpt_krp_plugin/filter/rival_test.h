@@ -27,6 +27,11 @@ struct RivalTestParams {
   /// matcher's grid and is moved by odometry alone) [m], [deg].
   double refine_step_m = 0.05;
   double refine_step_deg = 1.0;
+  /// ... then on as many more 3 x 3 x 3 grids, each of half the last one's steps
+  /// (refinedPoseOnGrids: a side held half a step off its best loses nats a scan to noise, and in
+  /// a place copied exactly elsewhere, the corridor's mirror image or the warehouse's aisles,
+  /// that noise decides the test). 0: the first grid only (the test before this parameter).
+  int finer_refinements = 3;
   /// With a see-through penalty, re-fit each side to the likelihood less that penalty, not to
   /// the likelihood alone. A beam that grazes a rack's corner sees through or not as the pose
   /// moves a few centimetres, and one such beam costs as much as the likelihood field tells two
@@ -37,8 +42,8 @@ struct RivalTestParams {
   bool refit_charges_see_through = true;
 };
 
-/// Throws std::invalid_argument for a decisive ratio that is not positive or a negative
-/// refinement step: what RivalTest refuses, for owners that check their settings up front.
+/// Throws std::invalid_argument for a decisive ratio that is not positive, a negative
+/// refinement step or refinement count: what RivalTest refuses, for owners that check their settings up front.
 void validateRivalTestParams(const RivalTestParams& params);
 
 class RivalTest {

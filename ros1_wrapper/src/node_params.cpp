@@ -18,6 +18,9 @@ using XmlRpc::XmlRpcValue;
 
 /// The largest look_alike_max_search_nodes accepted: about twenty minutes of one core.
 constexpr int kMaxSearchNodes = 1000000000;
+/// The most look_alike_rival_refinements accepted: ten halvings take 5 cm to 0.05 mm, far below
+/// the map's cells, and each costs another 27 scan evaluations per side and scan.
+constexpr int kMaxRivalRefinements = 10;
 
 /// One parameter: how to read it from its XML-RPC value into NodeParams.
 using Reader = std::function<void(NodeParams&, XmlRpcValue&, const std::string& key)>;
@@ -95,6 +98,7 @@ const std::map<std::string, Reader>& readers() {
       {"see_through_penalty", boolean(&NodeParams::see_through_penalty)},
       {"look_alike_search_charges_see_through", boolean(&NodeParams::look_alike_search_charges_see_through)},
       {"look_alike_refit_charges_see_through", boolean(&NodeParams::look_alike_refit_charges_see_through)},
+      {"look_alike_rival_refinements", integer(&NodeParams::look_alike_rival_refinements, 0, kMaxRivalRefinements)},
       {"look_alike_max_search_nodes", integer(&NodeParams::look_alike_max_search_nodes, 0, kMaxSearchNodes)},
   };
   return r;
@@ -180,6 +184,7 @@ LookAlikeGuardParams NodeParams::lookAlikeGuard() const {
   g.watch_rejected = look_alike_watch_rejected;
   g.search_charges_see_through = look_alike_search_charges_see_through;
   g.rival_test.refit_charges_see_through = look_alike_refit_charges_see_through;
+  g.rival_test.finer_refinements = look_alike_rival_refinements;
   g.max_search_nodes = look_alike_max_search_nodes;
   return g;
 }

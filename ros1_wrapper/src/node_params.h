@@ -63,6 +63,9 @@ struct NodeParams {
   /// `track`: the rival test re-fits the pose and its look-alike to each scan with the see-through
   /// charge in the fit (with see_through_penalty; RivalTestParams::refit_charges_see_through)
   bool look_alike_refit_charges_see_through = RivalTestParams{}.refit_charges_see_through;
+  /// `track`: finer grids, each of half the last one's steps, on which the rival test re-fits
+  /// each side after its 5 cm / 1 deg grid (0 = that grid only; RivalTestParams::finer_refinements)
+  int look_alike_rival_refinements = RivalTestParams{}.finer_refinements;
   /// `track`: nodes one charged look-alike search may score before it answers with the best place
   /// charged so far (0 = no limit; LookAlikeGuardParams::max_search_nodes)
   int look_alike_max_search_nodes = static_cast<int>(LookAlikeGuardParams{}.max_search_nodes);

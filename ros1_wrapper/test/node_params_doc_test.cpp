@@ -40,6 +40,7 @@ TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
   EXPECT_EQ(doc["see_through_penalty"].as<bool>(), d.see_through_penalty);
   EXPECT_EQ(doc["look_alike_search_charges_see_through"].as<bool>(), d.look_alike_search_charges_see_through);
   EXPECT_EQ(doc["look_alike_refit_charges_see_through"].as<bool>(), d.look_alike_refit_charges_see_through);
+  EXPECT_EQ(doc["look_alike_rival_refinements"].as<int>(), d.look_alike_rival_refinements);
   EXPECT_EQ(doc["look_alike_max_search_nodes"].as<int>(), d.look_alike_max_search_nodes);
   EXPECT_DOUBLE_EQ(doc["transform_tolerance_s"].as<double>(), d.transform_tolerance_s);
   EXPECT_DOUBLE_EQ(doc["transform_timeout_s"].as<double>(), d.transform_timeout_s);
@@ -61,18 +62,21 @@ TEST(RosNodeParams, TheFilterGetsTheSeeThroughSwitchAndTheKidnapDetector) {
 }
 
 // What the node hands its look-alike guard: the see-through charges of its search and of its
-// rival test's re-fit, and the search's node budget.
+// rival test's re-fit and its finer grids, and the search's node budget.
 TEST(RosNodeParams, TheGuardGetsTheChargeSwitchesAndItsBudget) {
   NodeParams p;
   EXPECT_TRUE(p.lookAlikeGuard().search_charges_see_through);
   EXPECT_TRUE(p.lookAlikeGuard().rival_test.refit_charges_see_through);
   EXPECT_EQ(p.lookAlikeGuard().max_search_nodes, LookAlikeGuardParams{}.max_search_nodes);
+  EXPECT_EQ(p.lookAlikeGuard().rival_test.finer_refinements, RivalTestParams{}.finer_refinements);
   p.look_alike_search_charges_see_through = false;
   p.look_alike_refit_charges_see_through = false;
+  p.look_alike_rival_refinements = 0;
   p.look_alike_max_search_nodes = 0;
   const auto g = p.lookAlikeGuard();
   EXPECT_FALSE(g.search_charges_see_through);
   EXPECT_FALSE(g.rival_test.refit_charges_see_through);
+  EXPECT_EQ(g.rival_test.finer_refinements, 0);
   EXPECT_EQ(g.max_search_nodes, 0);
 }
 
