@@ -4,6 +4,7 @@
 #   lds01 (the thesis robot's 360 deg 3.5 m lidar): every method, the seeded ones with the models
 #         trained for it (models/office_two_zone_lds01: krp-train-map --world office_two_zone
 #         --lidar lds01 --out models/office_two_zone_lds01)              -> reports/relocalization/office_two_zone_lds01
+#         with the path check (--path-ambiguity: what the scans allow a method on each trial)
 #   safety_270 (270 deg 25 m, front-mounted): the methods that need no models; no models are
 #         trained for it yet                                             -> reports/relocalization/office_two_zone_safety_270
 # Usage: scripts/bench_other_lidars.sh [lds01|safety_270|all] [extra krp-bench flags]
@@ -17,7 +18,7 @@ case "$which" in lds01|safety_270|all) ;; *) echo "usage: $0 [lds01|safety_270|a
 bench=./build/mrpt_krp_plugin/apps/krp-bench
 common=(--worlds office_two_zone --models-root models --steps 10 --seed 1 --trials 100)
 if [[ "$which" == all || "$which" == lds01 ]]; then
-  "$bench" "${common[@]}" --lidars lds01 \
+  "$bench" "${common[@]}" --lidars lds01 --path-ambiguity \
     --methods uniform-mcl,amcl-kld,seeded,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
     --out reports/relocalization/office_two_zone_lds01 "$@"
 fi

@@ -55,8 +55,14 @@ std::string pathAmbiguitySection(const std::vector<PathAmbiguitySplit>& splits, 
        "the first scan is within "
     << formatNumber(params.first_scan_margin)
     << " of the truth's are each driven along the truth's own path, and weighed against it scan after scan with "
-       "the filter's sensor model (and its see-through penalty when on), each side re-fitted to every scan, as "
-       "the look-alike guard weighs a rival. *Told apart*: the truth leads every such place by at least "
+       "the filter's sensor model (and its see-through penalty when on). The truth is weighed as the places are, "
+       "so that neither side is held nearer its best fit than the other: it starts "
+    << formatNumber(params.truth_offset_steps) << " of a step off its exact pose, and every side is re-fitted to "
+       "every scan on a "
+    << formatNumber(params.tracking.refine_step_m * 100.0) << " cm / "
+    << formatNumber(params.tracking.refine_step_deg) << " deg grid and then on "
+    << params.tracking.finer_refinements
+    << " grids of half the last one's steps. *Told apart*: the truth leads every such place by at least "
     << formatNumber(params.decisive_log_ratio)
     << " nats over the whole path. *Ambiguous*: some place stays within that, so the trial's scans cannot say "
        "which of the two the robot is at, and a method that is right and confident there is right by luck. "

@@ -47,6 +47,19 @@ TEST(PathAmbiguityReport, SplitsEachMethodsOutcomesByTheTrialsVerdict) {
   EXPECT_NE(md.find("| warehouse | omni_12m | seeded | 1/2 (50 %) | 1/2 (50 %) | 1/2 (50 %) | 0/1 (0 %)"), std::string::npos) << md;
 }
 
+TEST(PathAmbiguityReport, TheSectionSaysHowTheTruthAndThePlacesWereWeighed) {
+  const std::vector<TrialRecord> records = {record("seeded", PathVerdict::ambiguous, false, false, false)};
+  PathAmbiguityParams params;
+  params.truth_offset_steps = 0.5;
+  params.tracking.refine_step_m = 0.1;
+  params.tracking.refine_step_deg = 2.0;
+  params.tracking.finer_refinements = 2;
+  const auto md = pathAmbiguitySection(splitByPathAmbiguity(records), params);
+  EXPECT_NE(md.find("The truth is weighed as the places are"), std::string::npos) << md;
+  EXPECT_NE(md.find("it starts 0.5 of a step off its exact pose"), std::string::npos) << md;
+  EXPECT_NE(md.find("on a 10 cm / 2 deg grid and then on 2 grids of half"), std::string::npos) << md;
+}
+
 TEST(PathAmbiguityReport, NoSectionWhenNoTrialWasChecked) {
   const std::vector<TrialRecord> records = {record("seeded", PathVerdict::not_checked, true, false, true)};
   EXPECT_TRUE(splitByPathAmbiguity(records).empty());
