@@ -96,10 +96,11 @@ static int run(int argc, char** argv) {
                 {"fit-calibration", "FILE", "fit a confidence calibration on this run's first-scan answers (one world, "
                  "one relocalizing method, no --calibration) and write it", ""},
                 {"path-ambiguity", "", "check each trial (not kidnap trials) for places that explain its whole path as "
-                 "well as the truth, with the filter's sensor model: the report splits every method's outcome by "
+                 "well as the truth (those that fit its first scan nearly as well, and where each method ended "
+                 "wrong), with the filter's sensor model: the report splits every method's outcome by "
                  "whether the scans tell the truth apart", ""},
-                {"path-ambiguity-places", "N", "--path-ambiguity: places weighed per trial (the matcher's best on the "
-                 "first scan)", std::to_string(krp::PathAmbiguityParams{}.max_places)},
+                {"path-ambiguity-places", "N", "--path-ambiguity: first-scan places weighed per trial (the matcher's best; "
+                 "0: only where the methods ended)", std::to_string(krp::PathAmbiguityParams{}.max_places)},
                 {"tol-xy", "M", "convergence tolerance, position", "0.5"},
                 {"tol-deg", "DEG", "convergence tolerance, heading", "10"},
                 {"save-rawlogs", "", "also write each trial as an MRPT rawlog, a CARMEN log and its ground truth under OUT/rawlogs", ""}});
@@ -164,7 +165,7 @@ static int run(int argc, char** argv) {
   if (cfg.method_settings.guard.rival_test.finer_refinements < 0)
     throw krp::InputError("--guard-rival-refinements", "must be 0 or more");
   cfg.path_ambiguity_params.max_places = static_cast<int>(args.integer("path-ambiguity-places"));
-  if (cfg.path_ambiguity_params.max_places < 1) throw krp::InputError("--path-ambiguity-places", "must be >= 1");
+  if (cfg.path_ambiguity_params.max_places < 0) throw krp::InputError("--path-ambiguity-places", "must be >= 0");
   cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");
   cfg.method_settings.guard.max_search_nodes = args.integer("guard-max-search-nodes");
   if (cfg.method_settings.guard.max_search_nodes < 0) throw krp::InputError("--guard-max-search-nodes", "must be 0 or more");

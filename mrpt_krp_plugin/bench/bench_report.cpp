@@ -184,7 +184,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                 "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,confident_and_right,total_cpu_s,"
                 "seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,seed_best_fit_fraction,seed_cpu_s,kidnap_step,kidnap_tracking_before,"
                 "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s,"
-                "path_verdict,path_places,path_closest_log_ratio,path_closest_distance_m\n";
+                "path_verdict,path_places,path_end_places,path_closest_log_ratio,path_closest_distance_m,path_closest_source\n";
   updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s,"
                  "distance_m,fit_fraction,scan_unexplained\n";
   for (const auto& r : records) {
@@ -198,7 +198,8 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                << r.seed_best_from_matcher << "," << r.seed_best_fit_fraction << "," << r.seed_cpu_s << "," << r.kidnap_step << ","
                << r.kidnap.tracking_before << "," << r.kidnap.updates_to_detect << "," << r.kidnap.recovered << ","
                << r.kidnap.updates_to_recover << "," << r.kidnap.cpu_to_recover_s << "," << toString(r.path.verdict) << ","
-               << r.path.places << "," << r.path.closest_log_ratio << "," << r.path.closest_distance_m << "\n";
+               << r.path.places << "," << r.path.end_places << "," << r.path.closest_log_ratio << ","
+               << r.path.closest_distance_m << "," << r.path.closest_source << "\n";
     for (size_t i = 0; i < r.updates.size(); ++i) {
       const auto& u = r.updates[i];
       updates_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << i << "," << u.error_xy_m

@@ -139,14 +139,14 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
       const Trial trial = cfg.kidnap_at_step > 0 ? generateKidnapTrial(*job.map, job.lidar, tp, cfg, trial_seed)
                                                  : generateTrial(*job.map, job.lidar, tp, trial_seed);
       const auto steps = trialToSteps(trial);
-      PathAmbiguity path;
-      if (job.path_check) path = job.path_check->check(trial.truth, trial.scans);
       if (!cfg.rawlog_dir.empty()) {
         const std::string base =
             (std::filesystem::path(cfg.rawlog_dir) / (job.world.name + "_" + job.lidar.name + "_trial" + std::to_string(t))).string();
         writeTrialRawlog(trial, base + ".rawlog", base + "_groundtruth.txt");
         writeTrialCarmenLog(trial, base + ".carmen.log");
       }
+      std::vector<TrialRecord> trial_records;
+      std::vector<EndPlace> wrong_ends;  // for the path check, which runs once every method has
       for (const auto& method : cfg.methods) {
         MclParams mp = cfg.mcl;
         mp.seed = static_cast<uint32_t>(filter_seed);
@@ -165,12 +165,14 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         rec.trial_seed = trial_seed;
         rec.filter_seed = filter_seed;
         rec.free_area_m2 = free_m2;
-        rec.path = path;
         size_t last_initialization = 0;  // the seeding to check is the last one (after a kidnap, the re-seeding)
         for (size_t i = 0; i < steps.size(); ++i) {
           const auto estimate = loc.update(steps[i]);
           if (estimate.initialized) last_initialization = i;
           rec.updates.push_back(makeUpdateRecord(estimate, trial.truth[i], trial.distance_m[i]));
+          const auto& last = rec.updates.back();
+          if (i + 1 == steps.size() && !withinTolerance(last.error_xy_m, last.error_phi_deg, cfg.criteria))
+            wrong_ends.push_back({method, estimate.mean});
         }
         if (const auto seeded = std::dynamic_pointer_cast<SeededInitializer>(init); seeded && seeded->lastSeeding()) {
           const auto& ranking = seeded->lastSeeding()->ranking;
@@ -192,8 +194,13 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
           rec.kidnap = evaluateKidnap(rec.updates, static_cast<std::size_t>(cfg.kidnap_at_step), cfg.criteria);
         }
         bar.advance(1, job.world.name + "/" + method + " trial " + std::to_string(t) + " seed " + std::to_string(trial_seed));
-        out.push_back(std::move(rec));
+        trial_records.push_back(std::move(rec));
       }
+      if (job.path_check) {
+        const auto path = job.path_check->check(trial.truth, trial.scans, wrong_ends);
+        for (auto& rec : trial_records) rec.path = path;
+      }
+      for (auto& rec : trial_records) out.push_back(std::move(rec));
     }
   }
   bar.finish();

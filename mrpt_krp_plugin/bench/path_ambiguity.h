@@ -25,7 +25,7 @@ struct PathAmbiguityParams {
   /// than the decisive ratio (a tenth of a 180-return scan is ~18 returns at ~3 nats each).
   double first_scan_margin = 0.1;
   /// At most this many such places (the matcher's best ones, each at least its exclusion_m from
-  /// the truth and from one another).
+  /// the truth and from one another). 0: only the places where the methods ended (EndPlace).
   int max_places = 8;
   /// How the truth and each place are placed on the first scan, moved along the path and
   /// re-fitted to every scan with the filter's sensor model and its see-through penalty in the
@@ -55,18 +55,32 @@ enum class PathVerdict {
 };
 std::string toString(PathVerdict verdict);
 
+/// Where a method's filter ended a trial away from the truth. The first scan alone can offer
+/// the wrong places: where a short view along an aisle fits dozens of spots equally, they fill
+/// the matcher's list, and a place that fits every later scan as the truth does is never
+/// weighed (the warehouse's trial 15, the office's lds01 trial 94). A place a method settled on
+/// has fitted the whole path well by construction, so it is the one the verdict must weigh.
+struct EndPlace {
+  std::string source;          ///< the method that ended there
+  mrpt::math::TPose2D pose;    ///< its estimate at the trial's last scan
+};
+
 struct PathAmbiguity {
   PathVerdict verdict = PathVerdict::not_checked;
-  int places = 0;  ///< places weighed (those the first scan offered)
+  int places = 0;      ///< places weighed: those the first scan offered, then the end places
+  int end_places = 0;  ///< of them, the places where methods ended (EndPlace, after removing repeats)
   /// The truth's lead over the place that came closest, summed over the path [nats]; +inf
   /// when the first scan offered none.
   double closest_log_ratio = 0.0;
   double closest_distance_m = -1.0;  ///< that place's start from the truth's [m]; -1 without one
+  /// Where that place came from: "first_scan", or the EndPlace's source; empty without one.
+  std::string closest_source;
 };
 
-/// Each place that fits a trial's first scan nearly as well as the truth, moved along the
-/// truth's own path (rigidly, as a twin robot would drive it), is weighed against the truth,
-/// moved and re-fitted the same way, over every scan of the trial.
+/// Each place that fits a trial's first scan nearly as well as the truth, and each place where
+/// a method ended (moved back to where a twin robot would have had to start), is moved along
+/// the truth's own path (rigidly, as a twin robot would drive it) and weighed against the
+/// truth, moved and re-fitted the same way, over every scan of the trial.
 class PathAmbiguityCheck {
  public:
   /// `map` carries the filter's sensor model (SensorModelMap::grid); `see_through`, when not
@@ -75,10 +89,13 @@ class PathAmbiguityCheck {
                      std::shared_ptr<const CorrelativeMatcher> matcher,
                      std::shared_ptr<const SeeThroughPenalty> see_through, PathAmbiguityParams params = {});
 
-  /// `truth[i]` is where `scans[i]` was taken. Throws std::invalid_argument when they differ in
-  /// length or are empty.
+  /// `truth[i]` is where `scans[i]` was taken; `ends` are where methods ended at the last scan
+  /// (one within the matcher's exclusion_m of the truth or of a place already weighed, at the
+  /// start, is the same place and is not weighed again). Throws std::invalid_argument when
+  /// truth and scans differ in length or are empty.
   PathAmbiguity check(const std::vector<mrpt::math::TPose2D>& truth,
-                      const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans) const;
+                      const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans,
+                      const std::vector<EndPlace>& ends = {}) const;
 
  private:
   std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map_;

@@ -50,15 +50,20 @@ std::string pathAmbiguitySection(const std::vector<PathAmbiguitySplit>& splits, 
   if (splits.empty()) return "";
   std::ostringstream o;
   o << "## What the scans allow: trials whose path another place explains as well\n\n"
-    << "Before any method runs, each trial is checked against its truth: the places (up to " << params.max_places
+    << "Once every method has run, each trial is checked against its truth. The places weighed are those (up to "
+    << params.max_places
     << ", at least the matcher's exclusion distance from the truth and from one another) whose matcher score on "
        "the first scan is within "
     << formatNumber(params.first_scan_margin)
-    << " of the truth's are each driven along the truth's own path, and weighed against it scan after scan with "
-       "the filter's sensor model (and its see-through penalty when on). The truth is weighed as the places are, "
-       "so that neither side is held nearer its best fit than the other: it starts "
-    << formatNumber(params.truth_offset_steps) << " of a step off its exact pose, and every side is re-fitted to "
-       "every scan on a "
+    << " of the truth's, and each place where a method ended away from the truth, moved back to where a twin "
+       "robot would have had to start (one within the exclusion distance of the truth or of a place already "
+       "weighed is not weighed again; so the more methods a run compares, the more places it weighs). Each is driven along the truth's own path, and weighed against it scan after "
+       "scan with the filter's sensor model (and its see-through penalty when on). The truth is weighed as the "
+       "places are, so that neither side is held nearer its best fit than the other: it starts "
+    << formatNumber(params.truth_offset_steps)
+    << " of a step off its exact pose; on the first scan every side is first moved to its best pose within "
+    << formatNumber(params.tracking.first_scan_search_m) << " m / " << formatNumber(params.tracking.first_scan_search_deg)
+    << " deg, and on every scan it is re-fitted on a "
     << formatNumber(params.tracking.refine_step_m * 100.0) << " cm / "
     << formatNumber(params.tracking.refine_step_deg) << " deg grid and then on "
     << params.tracking.finer_refinements
@@ -67,8 +72,10 @@ std::string pathAmbiguitySection(const std::vector<PathAmbiguitySplit>& splits, 
     << " nats over the whole path. *Ambiguous*: some place stays within that, so the trial's scans cannot say "
        "which of the two the robot is at, and a method that is right and confident there is right by luck. "
        "*Misleading*: some place explains the path better than the truth by as much (unmapped clutter). Columns "
-       "`path_*` of `trials.csv` hold each trial's verdict, the places weighed, the truth's lead over the closest "
-       "and that place's distance.\n\n"
+       "`path_*` of `trials.csv` hold each trial's verdict, the places weighed (and how many of them were where "
+       "methods ended), the truth's lead over the closest, that place's distance and where it came from "
+       "(`first_scan` or the method that ended there). A verdict of *told apart* can still be optimistic: a place "
+       "that neither fits the first scan nor held any method is not weighed.\n\n"
     << "| world | lidar | trials | told apart | ambiguous | misleading |\n|---|---|---|---|---|---|\n";
   std::string last_pair;
   for (const auto& s : splits) {

@@ -54,10 +54,14 @@ TEST(PathAmbiguityReport, TheSectionSaysHowTheTruthAndThePlacesWereWeighed) {
   params.tracking.refine_step_m = 0.1;
   params.tracking.refine_step_deg = 2.0;
   params.tracking.finer_refinements = 2;
+  params.tracking.first_scan_search_m = 0.4;
+  params.tracking.first_scan_search_deg = 5.0;
   const auto md = pathAmbiguitySection(splitByPathAmbiguity(records), params);
   EXPECT_NE(md.find("The truth is weighed as the places are"), std::string::npos) << md;
   EXPECT_NE(md.find("it starts 0.5 of a step off its exact pose"), std::string::npos) << md;
-  EXPECT_NE(md.find("on a 10 cm / 2 deg grid and then on 2 grids of half"), std::string::npos) << md;
+  EXPECT_NE(md.find("on the first scan every side is first moved to its best pose within 0.4 m / 5 deg"), std::string::npos) << md;
+  EXPECT_NE(md.find("re-fitted on a 10 cm / 2 deg grid and then on 2 grids of half"), std::string::npos) << md;
+  EXPECT_NE(md.find("each place where a method ended away from the truth"), std::string::npos) << md;
 }
 
 TEST(PathAmbiguityReport, NoSectionWhenNoTrialWasChecked) {

@@ -80,13 +80,47 @@ TEST(PathAmbiguity, ScansThatFitAnotherPlaceBetterMislead) {
   EXPECT_LE(verdict.closest_log_ratio, -PathAmbiguityParams{}.decisive_log_ratio);
 }
 
+// The first scan's places left out (max_places 0): the twin room is weighed only because a
+// method ended there, and then the verdict is ambiguous and names that method. In the
+// warehouse's trial 15 the first scan's list was filled by spots sliding along an aisle, and the
+// place the filter settled on, which fits the path as the truth does, was never weighed.
+TEST(PathAmbiguity, WeighsThePlaceWhereAMethodEndedAsATwinRobotWouldHaveDrivenThere) {
+  auto rooms = test::twinRooms();
+  const auto path = drive();
+  const auto scans = scansAlong(rooms, path);
+  useSensorModel(rooms, SensorModelParams{});
+  auto grid = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(rooms);
+  PathAmbiguityParams params;
+  params.max_places = 0;
+  const PathAmbiguityCheck check(grid, std::make_shared<const CorrelativeMatcher>(*grid),
+                                 std::make_shared<const SeeThroughPenalty>(*grid, SensorModelParams{}), params);
+
+  const auto alone = check.check(path, scans);
+  EXPECT_EQ(alone.verdict, PathVerdict::told_apart) << "nothing weighed";
+  EXPECT_EQ(alone.places, 0);
+
+  const auto& end = path.back();
+  const TPose2D twin_end(end.x + test::twinRoomsShiftM(), end.y, end.phi);
+  const auto with_end = check.check(path, scans, {{"seeded", twin_end}});
+  EXPECT_EQ(with_end.verdict, PathVerdict::ambiguous);
+  EXPECT_EQ(with_end.end_places, 1);
+  EXPECT_EQ(with_end.closest_source, "seeded");
+  EXPECT_NEAR(with_end.closest_distance_m, test::twinRoomsShiftM(), 0.3) << "moved back to the twin's start";
+
+  // A method that ended beside the truth and one that ended where another already did add nothing.
+  const TPose2D beside(end.x + 0.5, end.y, end.phi);
+  const auto repeats = check.check(path, scans, {{"a", beside}, {"b", twin_end}, {"c", twin_end}});
+  EXPECT_EQ(repeats.end_places, 1);
+  EXPECT_EQ(repeats.closest_source, "b");
+}
+
 TEST(PathAmbiguity, RefusesBadParametersAndPathsThatDoNotMatchTheScans) {
   const auto room = test::asymmetricRoom();
   PathAmbiguityParams p;
   p.first_scan_margin = 1.5;
   EXPECT_THROW(validatePathAmbiguityParams(p), std::invalid_argument);
   p = {};
-  p.max_places = 0;
+  p.max_places = -1;
   EXPECT_THROW(validatePathAmbiguityParams(p), std::invalid_argument);
   p = {};
   p.decisive_log_ratio = 0.0;
