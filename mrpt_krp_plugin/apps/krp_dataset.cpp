@@ -42,7 +42,11 @@ static int run(int argc, char** argv) {
                 {"sdt-clip-m", "M", "SDT normalization distance", "2"},
                 {"orientation", "heading_up|wall_axes", "how submaps are turned: the robot's heading up, or the walls along the image axes", "wall_axes"},
                 {"block-m", "M", "floor block side for the split", "2"},
-                {"seed", "N", "seed (printed; the dataset is reproducible from it)", "1"}});
+                {"seed", "N", "seed (printed; the dataset is reproducible from it)", "1"},
+                {"split-seed", "N",
+                 "seed of the floor blocks' split (default: --seed); fresh samples for trained models keep the "
+                 "models' split seed, so their test images lie only in blocks the models never trained on",
+                 ""}});
   if (!args.parse(argc, argv)) return 0;
   krp::World world;
   if (args.has("map")) {
@@ -90,8 +94,13 @@ static int run(int argc, char** argv) {
   p.submap.orientation = krp::parseOrientation(args.get("orientation"), "--orientation");
   p.sdt.clip_m = args.number("sdt-clip-m");
   p.split.block_m = args.number("block-m");
-  p.seed = static_cast<uint64_t>(args.integer("seed"));
-  p.split.seed = p.seed;
+  const auto seed_option = [&args](const std::string& name) {
+    const long long v = args.integer(name);
+    if (v < 0) throw krp::InputError("--" + name, "'" + args.get(name) + "' is negative; seeds are >= 0");
+    return static_cast<uint64_t>(v);
+  };
+  p.seed = seed_option("seed");
+  p.split.seed = args.has("split-seed") ? seed_option("split-seed") : p.seed;
   std::cerr << "krp-dataset: world " << world.name << ", lidar " << in.lidar.name << ", " << in.zones.size()
             << " zones, seed " << p.seed << ", submap " << p.submap.size_m << " m / " << p.submap.size_px << " px, "
             << krp::orientationName(p.submap.orientation) << "\n";

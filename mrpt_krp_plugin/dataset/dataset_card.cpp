@@ -34,6 +34,7 @@ std::string datasetCardJson(const DatasetCard& card, const DatasetParams& p, con
                    {"changed_environment", "x3 clutter and occlusion, a third of the furniture moved"}};
   j["split"] = {{"by", "floor block"},
                 {"block_m", p.split.block_m},
+                {"seed", p.split.seed},
                 {"train", p.split.train_fraction},
                 {"val", p.split.val_fraction},
                 {"test", 1.0 - p.split.train_fraction - p.split.val_fraction}};
@@ -55,7 +56,7 @@ std::string datasetCardJson(const DatasetCard& card, const DatasetParams& p, con
 std::string datasetCardMarkdown(const DatasetCard& card, const DatasetParams& p, const DatasetInputs& in) {
   std::ostringstream o;
   o << "# Dataset card: " << card.world << " / " << in.lidar.name << "\n\n"
-    << "Made by `krp-dataset` (seed " << p.seed << "). Submap " << p.submap.size_m << " m at " << p.submap.size_px
+    << "Made by `krp-dataset` (seed " << p.seed << ", split seed " << p.split.seed << "). Submap " << p.submap.size_m << " m at " << p.submap.size_px
     << " px (" << p.submap.resolutionM() << " m/px); SDT clip " << p.sdt.clip_m << " m; scenario strength "
     << p.scenario.strength << "; " << in.landmark_params.keypoints_per_zone << " landmarks per zone ("
     << LandmarkParams::method() << "). Splits by " << p.split.block_m << " m floor blocks, "

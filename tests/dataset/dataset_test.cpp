@@ -153,5 +153,50 @@ TEST(DatasetGenerator, WritesSplitsLabelsCardAndIsReproducible) {
   EXPECT_THROW(generateDataset(in, p, dir + "/a", progress), InputError);
 }
 
+
+// Fresh samples for trained models: another sampling seed, the models' split seed. Every sample
+// must land in the split its floor block has under the split seed, not under the sampling seed.
+TEST(DatasetGenerator, FreshSamplesKeepTheSplitOfTheGivenSplitSeed) {
+  const auto world = buildOfficeTwoZone(1);
+  DatasetInputs in;
+  in.world_name = "office_two_zone";
+  in.map = &world.map;
+  in.zones = world.zones;
+  in.landmark_params.keypoints_per_zone = 4;
+  in.landmarks = extractLandmarks(world.map, world.zones, in.landmark_params);
+  in.clutter = ClutterParams{};
+  in.lidar = lidarProfileByName("omni_12m");
+  DatasetParams p;
+  p.samples_per_zone = 40;
+  p.changed_samples_per_zone = 0;
+  p.submap.size_px = 48;
+  p.seed = 2;
+  p.split.seed = 1;
+  const auto dir = test::tempDir("dataset_split_seed");
+  std::ostringstream progress;
+  generateDataset(in, p, dir + "/d", progress);
+  EXPECT_NE(readAll(fs::path(dir) / "d/dataset_card.json").find("\"seed\": 1"), std::string::npos);
+
+  LocationSplit models_split = p.split, sampling_split = p.split;
+  sampling_split.seed = p.seed;
+  std::istringstream csv(readAll(fs::path(dir) / "d/samples.csv"));
+  std::string line;
+  std::getline(csv, line);  // header: id,split,zone,x_m,y_m,...
+  int rows = 0, differs_from_sampling_seed = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::stringstream ls(line);
+    for (std::string v; std::getline(ls, v, ',');) f.push_back(v);
+    ASSERT_GE(f.size(), 5u) << line;
+    const mrpt::math::TPoint2D at{std::stod(f[3]), std::stod(f[4])};
+    EXPECT_EQ(f[1], splitName(models_split.of(at))) << line;
+    differs_from_sampling_seed += f[1] != splitName(sampling_split.of(at));
+    ++rows;
+  }
+  EXPECT_EQ(rows, 80);
+  // Otherwise the check above could not tell the two seeds apart.
+  EXPECT_GT(differs_from_sampling_seed, 0);
+}
+
 }  // namespace
 }  // namespace krp

@@ -72,7 +72,7 @@ def build(card: dict, card_sha256: str, map_path: Path, landmarks: dict, classif
             "kpt_shape": [landmarks["keypoints_per_zone"], 3],
         },
         "dataset": {"card_sha256": card_sha256, "seed": card["seed"], "counts": card["counts"],
-                    "scenario": card.get("scenario")},
+                    "scenario": card.get("scenario"), "split": card.get("split")},
         "training": {**training, "python": platform.python_version()},
     }
 
