@@ -37,6 +37,20 @@ def _classifier_section(m):
     return lines
 
 
+def _identity_mistakes(k) -> list:
+    """Models trained before the swap count was measured have none: nothing to say then."""
+    e = {s: k[s]["keypoint_error"] for s in ("test", "changed")}
+    if any("on_another_landmark" not in v for v in e.values()):
+        return []
+    parts = [f"{s} {v['on_another_landmark']} of {v['observed_keypoints']}, the rest "
+             f"{_f(v['mean_error_not_swapped_m'])} m mean / {_f(v['median_error_not_swapped_m'])} m median"
+             for s, v in e.items() if v["mean_error_not_swapped_m"] is not None]
+    if not parts:
+        return []
+    return [f"Identity mistakes (an observed keypoint more than {e['test']['swap_radius_m']} m from its own landmark "
+            "and within it of another landmark in the image): " + "; ".join(parts) + ".", ""]
+
+
 def _keypoint_section(m):
     k = m["keypoints"]["metrics"]
     lines = ["## Keypoint model (shipped: `keypoints.onnx`, YOLOv8n-pose; Table 4.3's analogue)", "",
@@ -55,6 +69,7 @@ def _keypoint_section(m):
               f"(test: {k['test']['keypoint_error']['right_zone']} of {k['test']['keypoint_error']['images']}; "
               f"changed: {k['changed']['keypoint_error']['right_zone']} of "
               f"{k['changed']['keypoint_error']['images']}).", "",
+              *_identity_mistakes(k),
               f"Training: {k['epochs']} epochs, {k['train_seconds']:.0f} s.", "",
               "![keypoint curves](figures/keypoint_curves.png)", ""]
     return lines

@@ -77,7 +77,9 @@ def test_the_report_sets_each_figure_beside_the_shipped_one(tmp_path):
             "classifier": {"test": {"images": 2, "accuracy": 0.5, "confusion": [[1, 1], [0, 0]]},
                            "changed": {"images": 1, "accuracy": 1.0, "confusion": [[1, 0], [0, 0]]},
                            "train": {"images": 5, "accuracy": 0.8, "confusion": [[4, 1], [0, 0]]}},
-            "keypoints": {"test": {"pose": {"map50": 0.6}, "keypoint_error": {"mean_error_m": 1.25}},
+            "keypoints": {"test": {"pose": {"map50": 0.6},
+                                   "keypoint_error": {"mean_error_m": 1.25, "on_another_landmark": 4,
+                                                      "mean_error_not_swapped_m": 0.31, "swap_radius_m": 0.5}},
                           "changed": {"pose": {"map50": 0.4}}}},
     }
     write_report(result, {"zones": ["a", "b"], "lidar": {"name": "omni_12m"}}, tmp_path / "R.md")
@@ -87,5 +89,8 @@ def test_the_report_sets_each_figure_beside_the_shipped_one(tmp_path):
     assert "| changed environment | 83.0 % | 100.0 % | 1 | >= 95.0 % |" in text
     assert "| pose mAP@50 | 0.817 | 0.600 | - | 0.400 | >= 0.95 |" in text
     assert "| mean error of observed keypoints | 2.780 m | 1.250 m | - | - | <= 0.15 m |" in text
+    assert "| of them on another landmark (identity mistakes) | - | 4 | - | - |  |" in text
+    assert "| mean error, identity mistakes apart | - | 0.310 m | - | - |  |" in text
+    assert "swap radius (0.500 m)" in text
     assert "| **a** | 1 | 1 |" in text
     assert "Images: train 5, val 0, test 2, changed 1." in text
