@@ -25,11 +25,11 @@ from .stage_timer import StageTimer
 REPO_ROOT = Path(__file__).resolve().parents[3]
 DEFAULT_BIN_DIR = REPO_ROOT / "build" / "mrpt_krp_plugin" / "apps"
 
-# Measured on 2 CPU cores (shared/notes/dependencies.md and our runs), to give a first time estimate
-# before the progress bars take over with their own.
-SECONDS_PER_IMAGE_EPOCH = {"compact": 0.008, "yolo": 0.05}
-DATASET_SECONDS_PER_IMAGE = 0.008
-# The keypoint model's training images: 600 x 40 epochs is ~20 min of a 2-core CPU.
+# Measured on 2 CPU cores, to give a first time estimate before the progress bars take over with
+# their own: the shipped office and warehouse models' stage times (manifest.json) took 0.0069 and
+# 0.0107 s per classifier image-epoch and 0.080 and 0.072 s per keypoint image-epoch.
+SECONDS_PER_IMAGE_EPOCH = {"compact": 0.009, "yolo": 0.076}
+# The keypoint model's training images: 600 x 40 epochs is ~30 min of a 2-core CPU.
 KEYPOINT_TRAIN_IMAGES = 600
 
 
@@ -85,6 +85,21 @@ def _dataset_command(args, bin_dir: Path, dataset_dir: Path) -> list:
     return cmd
 
 
+def estimate_rest_s(n_classifier_images: int, classifier_epochs: int, n_keypoint_images: int,
+                    keypoint_epochs: int) -> dict:
+    """Seconds the two training stages should take on a 2-core CPU, from the measured per-image costs."""
+    return {"classifier": n_classifier_images * classifier_epochs * SECONDS_PER_IMAGE_EPOCH["compact"],
+            "keypoints": n_keypoint_images * keypoint_epochs * SECONDS_PER_IMAGE_EPOCH["yolo"]}
+
+
+def _print_estimate(est: dict) -> None:
+    """Once the dataset is made the image counts are known: the whole wait, before it starts."""
+    parts = ", ".join(f"{k} {v / 60:.0f} min" for k, v in est.items())
+    print(f"[krp-train-map] estimate for the rest on a 2-core CPU: {parts}, about {sum(est.values()) / 60:.0f} min "
+          "in all (--samples-per-zone, --classifier-epochs, --keypoint-train-images and --keypoint-epochs trade "
+          "accuracy for time)", file=sys.stderr, flush=True)
+
+
 def _device(choice: str) -> str:
     if choice == "auto":
         return "cuda" if torch.cuda.is_available() else "cpu"
@@ -133,7 +148,11 @@ def main(argv=None) -> int:
     cp = train_classifier.ClassifierParams(architecture=args.classifier, epochs=args.classifier_epochs,
                                            seed=args.seed, device=device,
                                            augment=AugmentParams(max_rotation_deg=rotation))
-    est = n_train * cp.epochs * SECONDS_PER_IMAGE_EPOCH["compact"] if device == "cpu" else None
+    kp_images = n_train if args.keypoint_train_images <= 0 else min(n_train, args.keypoint_train_images)
+    rest = estimate_rest_s(n_train, cp.epochs, kp_images, args.keypoint_epochs)
+    if device == "cpu":
+        _print_estimate(rest)
+    est = rest["classifier"] if device == "cpu" else None
     with timer.stage("classifier", est):
         cls = train_classifier.train(sets["train"], sets["val"], len(zones), cp)
     evaluated = {s: train_classifier.evaluate(cls.model, sets[s], len(zones), device)
@@ -155,7 +174,7 @@ def main(argv=None) -> int:
     img_px = int(card["submap"]["size_px"])
     kp_yaml, n_kp_train = train_keypoints.limit_training_images(dataset_dir / "keypoints" / "data.yaml", work,
                                                                 args.keypoint_train_images, args.seed)
-    est = n_kp_train * kp.epochs * SECONDS_PER_IMAGE_EPOCH["yolo"] if device == "cpu" else None
+    est = estimate_rest_s(0, 0, n_kp_train, kp.epochs)["keypoints"] if device == "cpu" else None
     with timer.stage("keypoints", est):
         kpr = train_keypoints.train(kp_yaml, work, kp, img_px)
     if (kpr.run_dir / "results.csv").exists():

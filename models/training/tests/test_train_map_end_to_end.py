@@ -92,3 +92,11 @@ def test_a_map_file_without_zones_is_zoned_and_trained(tmp_path, bin_dir):
     res = subprocess.run([str(bin_dir / "krp-infer"), "--models", str(out), "--latency", "1"], capture_output=True,
                          text=True)
     assert res.returncode == 0, res.stderr
+
+
+def test_the_estimate_scales_with_images_and_epochs():
+    one = train_map.estimate_rest_s(1000, 10, 600, 40)
+    assert one["classifier"] == 1000 * 10 * train_map.SECONDS_PER_IMAGE_EPOCH["compact"]
+    assert one["keypoints"] == 600 * 40 * train_map.SECONDS_PER_IMAGE_EPOCH["yolo"]
+    double = train_map.estimate_rest_s(2000, 10, 600, 80)
+    assert double["classifier"] == 2 * one["classifier"] and double["keypoints"] == 2 * one["keypoints"]
