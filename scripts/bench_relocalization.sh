@@ -8,6 +8,8 @@
 #                    alone), global-matcher (~6 min on 2 idle cores);
 #   warehouse:       30 trials, the same methods but amcl-kld-50k (reports/baseline/warehouse has
 #                    it over 40 updates); uniform-mcl starts with 92,537 particles (~5 min).
+#   warehouse-40:    (only when asked) the warehouse over 40 updates with uniform-mcl, amcl-kld
+#                    and seeded, into reports/relocalization/warehouse_40_updates (~13 min).
 # Each trial is also checked for places that explain its whole path as well as the truth
 # (--path-ambiguity): the reports split every method's outcome by that verdict.
 # Usage: scripts/bench_relocalization.sh [office|warehouse|all] [extra krp-bench flags]
@@ -17,7 +19,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 which="${1:-all}"
 [[ $# -gt 0 ]] && shift
-case "$which" in office|warehouse|all) ;; *) echo "usage: $0 [office|warehouse|all] [krp-bench flags]" >&2; exit 2;; esac
+case "$which" in office|warehouse|all|warehouse-40) ;; *) echo "usage: $0 [office|warehouse|all|warehouse-40] [krp-bench flags]" >&2; exit 2;; esac
 bench=./build/mrpt_krp_plugin/apps/krp-bench
 common=(--lidars omni_12m --models-root models --steps 10 --seed 1 --path-ambiguity)
 if [[ "$which" == all || "$which" == office ]]; then
@@ -29,4 +31,10 @@ if [[ "$which" == all || "$which" == warehouse ]]; then
   "$bench" --worlds warehouse "${common[@]}" --trials 30 \
     --methods uniform-mcl,amcl-kld,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
     --out reports/relocalization/warehouse "$@"
+fi
+# The warehouse over 40 updates (not part of 'all', ~13 min): what moving buys where 10 updates
+# leave most trials ambiguous.
+if [[ "$which" == warehouse-40 ]]; then
+  "$bench" --worlds warehouse --lidars omni_12m --models-root models --steps 40 --seed 1 --path-ambiguity --trials 30 \
+    --methods uniform-mcl,amcl-kld,seeded --out reports/relocalization/warehouse_40_updates "$@"
 fi
