@@ -84,6 +84,10 @@ static int run(int argc, char** argv) {
                 {"guard-refit-ignores-see-through", "", "methods with the look-alike guard: the rival test re-fits "
                  "each side to the likelihood alone and charges the see-through penalty where that puts it "
                  "(RivalTestParams::refit_charges_see_through false; the guard before it was the default)", ""},
+                {"guard-history", "N", "methods with the look-alike guard: a new look-alike is also weighed on "
+                 "the N scans before it, each side moved back along the odometry (LookAlikeGuardParams::"
+                 "history_updates; 0 = the guard before it, the default)",
+                 std::to_string(krp::LookAlikeGuardParams{}.history_updates)},
                 {"guard-rival-refinements", "N", "methods with the look-alike guard: finer grids, each of half the "
                  "last one's steps, on which the rival test re-fits each side after its 5 cm / 1 deg grid "
                  "(RivalTestParams::finer_refinements; 0 = the test before that parameter)",
@@ -161,6 +165,8 @@ static int run(int argc, char** argv) {
   cfg.mcl.see_through.enabled = !args.flag("no-see-through");
   cfg.path_ambiguity = args.flag("path-ambiguity");
   cfg.method_settings.guard.rival_test.refit_charges_see_through = !args.flag("guard-refit-ignores-see-through");
+  cfg.method_settings.guard.history_updates = static_cast<int>(args.integer("guard-history"));
+  if (cfg.method_settings.guard.history_updates < 0) throw krp::InputError("--guard-history", "must be 0 or more");
   cfg.method_settings.guard.rival_test.finer_refinements = static_cast<int>(args.integer("guard-rival-refinements"));
   if (cfg.method_settings.guard.rival_test.finer_refinements < 0)
     throw krp::InputError("--guard-rival-refinements", "must be 0 or more");

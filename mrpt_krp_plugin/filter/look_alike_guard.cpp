@@ -21,6 +21,7 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
     throw std::invalid_argument("LookAlikeGuard: ambiguity_margin must be at least score_margin");
   if (params_.recheck_every_updates < 0 || params_.remembered_rejected < 0)
     throw std::invalid_argument("LookAlikeGuard: recheck_every_updates and remembered_rejected must be 0 or more");
+  if (params_.history_updates < 0) throw std::invalid_argument("LookAlikeGuard: history_updates must be 0 or more");
   if (params_.max_search_nodes < 0) throw std::invalid_argument("LookAlikeGuard: max_search_nodes must be 0 or more");
   if (params_.searches_per_update < 1) throw std::invalid_argument("LookAlikeGuard: searches_per_update must be at least 1");
   if (!(params_.min_fit_fraction >= 0.0 && params_.min_fit_fraction <= 1.0))

@@ -69,6 +69,11 @@ struct LookAlikeGuardParams {
   /// takes the best place charged so far (CorrelativeMatcher's max_nodes_scored). 0: no limit.
   long long max_search_nodes = 1000000;
   RivalTestParams rival_test;  ///< how a look-alike that fits nearly as well is decided
+  /// A look-alike found now is also weighed on this many earlier scans, each side moved back
+  /// along the odometry to where a twin robot would have stood (ScanHistory): a place that fits
+  /// the current stretch of aisle but not the path that led there loses at once. 0: a new
+  /// look-alike starts its test even (the guard before this parameter, the default).
+  int history_updates = 0;
   /// Rivals decided against are left out of later searches while the filter stays converged; the
   /// oldest is forgotten beyond this many (their odometry-moved positions age).
   int remembered_rejected = 4;

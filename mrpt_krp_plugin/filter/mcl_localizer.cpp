@@ -61,6 +61,7 @@ MclLocalizer::MclLocalizer(OwnMap map, std::shared_ptr<ParticleInitializer> init
 
 void MclLocalizer::setLookAlikeGuard(std::shared_ptr<const LookAlikeGuard> guard) {
   guard_ = std::move(guard);
+  history_ = ScanHistory(guard_ ? static_cast<std::size_t>(guard_->params().history_updates) : 0);
   if (guard_ && guard_->params().min_fit_fraction > 0.0 && !fit_scorer_)
     fit_scorer_ = std::make_unique<ScanFitScorer>(*map_);
 }
@@ -178,18 +179,19 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
       updates_since_check_ = 0;
       // In a corridor many places tie: the one that lost may not be the last look-alike. It
       // counts as one of the look-alikes weighed in this update.
-      return gp.searches_per_update > 1 && searchForLookAlike(scan, see_through, mean, fresh, gp.searches_per_update - 1);
+      return gp.searches_per_update > 1 &&
+             searchForLookAlike(scan, see_through, mean, increment, fresh, gp.searches_per_update - 1);
     }
   }
   ++updates_since_check_;
   const bool due = fresh || (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
   if (!due) return false;
-  return searchForLookAlike(scan, see_through, mean, fresh, gp.searches_per_update);
+  return searchForLookAlike(scan, see_through, mean, increment, fresh, gp.searches_per_update);
 }
 
 bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
                                       const SeeThroughPenalty::Scan* see_through, const mrpt::math::TPose2D& mean,
-                                      bool fresh, int searches) {
+                                      const mrpt::poses::CPose2D& increment, bool fresh, int searches) {
   const auto& gp = guard_->params();
   updates_since_check_ = 0;
   // A look-alike that loses at once is excluded and the search repeated, so that an estimate
@@ -206,7 +208,7 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
       moveShareOfParticlesTo(found->pose);
       return true;
     }
-    rival_.emplace(found->pose, gp.rival_test);
+    rival_.emplace(history_.primedTest(found->pose, mean, increment, *map_, gp.rival_test));
     if (rival_->update(*map_, scan, mean, see_through) != RivalTest::Verdict::tracked_wins) return false;
     rememberRejected(*rival_);
     rival_.reset();
@@ -227,6 +229,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     converged_ = false;
     rival_.reset();
     rejected_.clear();
+    history_.clear();  // scans from before a re-seed may be from before a kidnap
   }
   auto action = step.action;
   if (!action) {
@@ -248,11 +251,13 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   if (!filter_.m_options.adaptiveSampleSize) resampleSystematicIfNeeded();
 
   auto [cov, mean] = pf_.getCovarianceAndMean();
+  const auto increment = odometryIncrement(*action);
   if (guard_ && scan &&
-      guardConvergence(*scan, see_through ? &*see_through : nullptr, mean.asTPose(), cov, odometryIncrement(*action))) {
+      guardConvergence(*scan, see_through ? &*see_through : nullptr, mean.asTPose(), cov, increment)) {
     e.look_alike_found = true;
     std::tie(cov, mean) = pf_.getCovarianceAndMean();
   }
+  if (guard_ && scan) history_.push(*scan, see_through, increment);
   e.mean = mean.asTPose();
   e.cov = cov;
   if (rival_) {

@@ -12,6 +12,7 @@
 #include "mrpt_krp_plugin/filter/kidnap_detector.h"
 #include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/filter/particle_initializer.h"
+#include "mrpt_krp_plugin/filter/scan_history.h"
 #include "mrpt_krp_plugin/filter/see_through.h"
 #include "mrpt_krp_plugin/filter/sensor_model.h"
 #include "mrpt_krp_plugin/relocalize/scan_fit.h"
@@ -99,7 +100,8 @@ class MclLocalizer {
   /// `searches` times at most; true when particles were moved. `fresh`: the filter converged at
   /// this update.
   bool searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const SeeThroughPenalty::Scan* see_through,
-                          const mrpt::math::TPose2D& mean, bool fresh, int searches);
+                          const mrpt::math::TPose2D& mean, const mrpt::poses::CPose2D& increment, bool fresh,
+                          int searches);
   /// Leaves the rival of `test` out of later searches, and keeps it under watch when the guard
   /// says so (the oldest beyond the guard's memory is forgotten).
   void rememberRejected(RivalTest test);
@@ -134,6 +136,7 @@ class MclLocalizer {
   int updates_since_check_ = 0;         ///< converged updates since the guard last searched
   std::optional<RivalTest> rival_;      ///< a look-alike being weighed against the mean
   std::deque<RivalTest> rejected_;      ///< look-alikes the scans decided against, moved by odometry
+  ScanHistory history_;                 ///< earlier scans a new look-alike is weighed on (guard's history_updates)
   uint64_t guard_draws_ = 0;
 };
 

@@ -392,6 +392,14 @@ TEST(LookAlikeGuard, RefusesAFitFloorOutsideZeroToOneOrASpreadThatReadsConverged
   EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
 }
 
+TEST(LookAlikeGuard, RefusesANegativeHistory) {
+  LookAlikeGuardParams p;
+  p.history_updates = -1;
+  EXPECT_THROW(LookAlikeGuard(std::make_shared<CorrelativeMatcher>(test::asymmetricRoom()), p), std::invalid_argument);
+  p.history_updates = 0;
+  EXPECT_NO_THROW(LookAlikeGuard(std::make_shared<CorrelativeMatcher>(test::asymmetricRoom()), p));
+}
+
 TEST(LookAlikeGuard, RefusesNoSearchPerUpdate) {
   LookAlikeGuardParams p;
   p.searches_per_update = 0;
