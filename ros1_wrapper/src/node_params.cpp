@@ -21,6 +21,9 @@ constexpr int kMaxSearchNodes = 1000000000;
 /// The most look_alike_rival_refinements accepted: ten halvings take 5 cm to 0.05 mm, far below
 /// the map's cells, and each costs another 27 scan evaluations per side and scan.
 constexpr int kMaxRivalRefinements = 10;
+// Each stored scan is replayed for every new look-alike: beyond this the replay costs more than a
+// second's worth of updates.
+constexpr int kMaxHistoryUpdates = 50;
 
 /// One parameter: how to read it from its XML-RPC value into NodeParams.
 using Reader = std::function<void(NodeParams&, XmlRpcValue&, const std::string& key)>;
@@ -100,6 +103,7 @@ const std::map<std::string, Reader>& readers() {
       {"look_alike_refit_charges_see_through", boolean(&NodeParams::look_alike_refit_charges_see_through)},
       {"look_alike_rival_refinements", integer(&NodeParams::look_alike_rival_refinements, 0, kMaxRivalRefinements)},
       {"look_alike_max_search_nodes", integer(&NodeParams::look_alike_max_search_nodes, 0, kMaxSearchNodes)},
+      {"look_alike_history_updates", integer(&NodeParams::look_alike_history_updates, 0, kMaxHistoryUpdates)},
   };
   return r;
 }
@@ -186,6 +190,7 @@ LookAlikeGuardParams NodeParams::lookAlikeGuard() const {
   g.rival_test.refit_charges_see_through = look_alike_refit_charges_see_through;
   g.rival_test.finer_refinements = look_alike_rival_refinements;
   g.max_search_nodes = look_alike_max_search_nodes;
+  g.history_updates = look_alike_history_updates;
   return g;
 }
 

@@ -69,6 +69,9 @@ struct NodeParams {
   /// `track`: nodes one charged look-alike search may score before it answers with the best place
   /// charged so far (0 = no limit; LookAlikeGuardParams::max_search_nodes)
   int look_alike_max_search_nodes = static_cast<int>(LookAlikeGuardParams{}.max_search_nodes);
+  /// `track`: a look-alike found is also weighed on this many earlier scans, each side moved back
+  /// along the odometry (0 = off, the default; LookAlikeGuardParams::history_updates)
+  int look_alike_history_updates = LookAlikeGuardParams{}.history_updates;
 
   // Derived library parameters.
   HypothesisSourceParams hypothesisSource() const;
