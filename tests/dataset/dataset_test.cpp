@@ -32,6 +32,19 @@ LocalGrid emptyGrid(int size_px, double res) {
   return g;
 }
 
+/// The built office's inputs with `keypoints` landmarks per zone; `world` must outlive them.
+DatasetInputs officeInputs(const BuiltWorld& world, int keypoints) {
+  DatasetInputs in;
+  in.world_name = "office_two_zone";
+  in.map = &world.map;
+  in.zones = world.zones;
+  in.landmark_params.keypoints_per_zone = keypoints;
+  in.landmarks = extractLandmarks(world.map, world.zones, in.landmark_params);
+  in.clutter = ClutterParams{};
+  in.lidar = lidarProfileByName("omni_12m");
+  return in;
+}
+
 TEST(KeypointLabel, ProjectsLandmarksWithVisibility) {
   // Robot at (10, 5) facing +y: a landmark 2 m ahead of it is at (10, 7) in the map and
   // straight up from the image centre; one 100 m away is outside.
@@ -109,14 +122,7 @@ TEST(Scenario, StrengthZeroChangesNothing) {
 
 TEST(DatasetGenerator, WritesSplitsLabelsCardAndIsReproducible) {
   const auto world = buildOfficeTwoZone(1);
-  DatasetInputs in;
-  in.world_name = "office_two_zone";
-  in.map = &world.map;
-  in.zones = world.zones;
-  in.landmark_params.keypoints_per_zone = 6;
-  in.landmarks = extractLandmarks(world.map, world.zones, in.landmark_params);
-  in.clutter = ClutterParams{};
-  in.lidar = lidarProfileByName("omni_12m");
+  const auto in = officeInputs(world, 6);
   DatasetParams p;
   p.samples_per_zone = 30;
   p.changed_samples_per_zone = 5;
@@ -153,19 +159,11 @@ TEST(DatasetGenerator, WritesSplitsLabelsCardAndIsReproducible) {
   EXPECT_THROW(generateDataset(in, p, dir + "/a", progress), InputError);
 }
 
-
 // Fresh samples for trained models: another sampling seed, the models' split seed. Every sample
 // must land in the split its floor block has under the split seed, not under the sampling seed.
 TEST(DatasetGenerator, FreshSamplesKeepTheSplitOfTheGivenSplitSeed) {
   const auto world = buildOfficeTwoZone(1);
-  DatasetInputs in;
-  in.world_name = "office_two_zone";
-  in.map = &world.map;
-  in.zones = world.zones;
-  in.landmark_params.keypoints_per_zone = 4;
-  in.landmarks = extractLandmarks(world.map, world.zones, in.landmark_params);
-  in.clutter = ClutterParams{};
-  in.lidar = lidarProfileByName("omni_12m");
+  const auto in = officeInputs(world, 4);
   DatasetParams p;
   p.samples_per_zone = 40;
   p.changed_samples_per_zone = 0;
