@@ -4,6 +4,15 @@ import time
 from contextlib import contextmanager
 
 
+# Below this an estimate reads better in seconds than in fractions of a minute.
+SECONDS_SHOWN_UP_TO = 90
+
+
+def duration(seconds: float) -> str:
+    """'45 s' or '12.5 min': how long a stage should take, as a person reads it."""
+    return f"{seconds:.0f} s" if seconds < SECONDS_SHOWN_UP_TO else f"{seconds / 60:.1f} min"
+
+
 class StageTimer:
     def __init__(self, stream=sys.stderr):
         self.seconds = {}
@@ -12,7 +21,7 @@ class StageTimer:
 
     @contextmanager
     def stage(self, name: str, estimate_s: float = None):
-        note = f" (estimate {estimate_s / 60:.1f} min)" if estimate_s else ""
+        note = f" (estimate {duration(estimate_s)})" if estimate_s else ""
         print(f"[krp-train-map] stage '{name}' started{note}", file=self._stream, flush=True)
         t0 = time.perf_counter()
         yield

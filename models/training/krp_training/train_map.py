@@ -20,7 +20,7 @@ import yaml
 from . import classifier_models, export, keypoint_error, manifest, plots, report, train_classifier, train_keypoints
 from .augment import AugmentParams, max_rotation_deg
 from .image_folders import SPLITS, read_split
-from .stage_timer import StageTimer
+from .stage_timer import StageTimer, duration
 
 REPO_ROOT = Path(__file__).resolve().parents[3]
 DEFAULT_BIN_DIR = REPO_ROOT / "build" / "mrpt_krp_plugin" / "apps"
@@ -94,8 +94,8 @@ def estimate_rest_s(n_classifier_images: int, classifier_epochs: int, n_keypoint
 
 def _print_estimate(est: dict) -> None:
     """Once the dataset is made the image counts are known: the whole wait, before it starts."""
-    parts = ", ".join(f"{k} {v / 60:.0f} min" for k, v in est.items())
-    print(f"[krp-train-map] estimate for the rest on a 2-core CPU: {parts}, about {sum(est.values()) / 60:.0f} min "
+    parts = ", ".join(f"{k} {duration(v)}" for k, v in est.items())
+    print(f"[krp-train-map] estimate for the rest on a 2-core CPU: {parts}, about {duration(sum(est.values()))} "
           "in all (--samples-per-zone, --classifier-epochs, --keypoint-train-images and --keypoint-epochs trade "
           "accuracy for time)", file=sys.stderr, flush=True)
 

@@ -100,3 +100,11 @@ def test_the_estimate_scales_with_images_and_epochs():
     assert one["keypoints"] == 600 * 40 * train_map.SECONDS_PER_IMAGE_EPOCH["yolo"]
     double = train_map.estimate_rest_s(2000, 10, 600, 80)
     assert double["classifier"] == 2 * one["classifier"] and double["keypoints"] == 2 * one["keypoints"]
+
+
+def test_short_estimates_read_in_seconds_and_long_ones_in_minutes():
+    from krp_training.stage_timer import duration
+    assert duration(14.4) == "14 s"
+    assert duration(89) == "89 s"
+    assert duration(90) == "1.5 min"
+    assert duration(1824) == "30.4 min"
