@@ -3,10 +3,10 @@
 
 namespace krp {
 
-void ScanHistory::push(const mrpt::obs::CObservation2DRangeScan& scan, std::optional<SeeThroughPenalty::Scan> see_through,
-                       const mrpt::poses::CPose2D& increment) {
+void ScanHistory::push(const mrpt::obs::CObservation2DRangeScan& scan,
+                       const std::optional<SeeThroughPenalty::Scan>& see_through, const mrpt::poses::CPose2D& increment) {
   if (capacity_ == 0) return;
-  steps_.push_back({scan, std::move(see_through), increment});
+  steps_.push_back({scan, see_through, increment});
   while (steps_.size() > capacity_) steps_.pop_front();
 }
 

@@ -27,7 +27,8 @@ class ScanHistory {
 
   /// One update: its scan, the scan's see-through penalty when the filter charges one, and the
   /// odometry increment from the update before to this one.
-  void push(const mrpt::obs::CObservation2DRangeScan& scan, std::optional<SeeThroughPenalty::Scan> see_through,
+  /// With capacity 0 nothing is copied: the filter calls this on every update.
+  void push(const mrpt::obs::CObservation2DRangeScan& scan, const std::optional<SeeThroughPenalty::Scan>& see_through,
             const mrpt::poses::CPose2D& increment);
   void clear() { steps_.clear(); }
   std::size_t size() const { return steps_.size(); }

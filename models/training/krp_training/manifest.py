@@ -7,6 +7,7 @@ import json
 import platform
 from pathlib import Path
 
+import numpy as np
 import yaml
 
 from .export import CLASSIFIER_INPUT, CLASSIFIER_OUTPUT, sha256
@@ -32,6 +33,21 @@ def read_landmarks(landmarks_yaml: Path) -> dict:
     return {"method": doc["method"], "keypoints_per_zone": int(doc["keypoints_per_zone"]),
             "zones": [{"zone": z["zone"], "points": [[float(x), float(y)] for x, y in z["points"]]}
                       for z in doc["zones"]]}
+
+
+def rendering_args(m: dict) -> list:
+    """krp-dataset flags that render submaps as the models in `m` were trained on: lidar, submap
+    size and orientation, SDT clip (manifests from before orientations were heading up)."""
+    return ["--lidar", m["lidar"]["name"], "--size-px", str(m["submap"]["size_px"]),
+            "--size-m", str(m["submap"]["size_m"]), "--sdt-clip-m", str(m["sdt_clip_m"]),
+            "--orientation", m["submap"].get("orientation", "heading_up")]
+
+
+def classifier_input(m: dict, grey):
+    """An occupancy image (H x W grey levels) as the classifier's 1 x 1 x H x W input, normalized
+    as the manifest says: what the C++ runtime feeds it."""
+    n = m["classifier"]["input"]["normalize"]
+    return ((np.asarray(grey, dtype=np.float32) * n["scale"] - n["mean"]) / n["std"])[None, None]
 
 
 def build(card: dict, card_sha256: str, map_path: Path, landmarks: dict, classifier: dict, keypoints: dict,

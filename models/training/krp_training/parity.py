@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from . import offline
+from .manifest import classifier_input, rendering_args
 
 # Both sides run the same onnxruntime version with one thread; what remains is float summation order.
 PROBABILITY_TOLERANCE = 1e-5
@@ -31,10 +32,9 @@ PARITY_IOU = 0.7
 
 def render_images(dataset_app: Path, world_dir: Path, manifest: dict, out: Path, per_zone: int) -> tuple:
     subprocess.run([str(dataset_app), "--world", manifest["world"], "--world-dir", str(world_dir),
-                    "--lidar", manifest["lidar"]["name"], "--out", str(out), "--samples-per-zone", str(per_zone),
-                    "--changed-per-zone", "1", "--size-px", str(manifest["submap"]["size_px"]),
-                    "--size-m", str(manifest["submap"]["size_m"]), "--sdt-clip-m", str(manifest["sdt_clip_m"]),
-                    "--seed", "7"], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                    *rendering_args(manifest), "--out", str(out), "--samples-per-zone", str(per_zone),
+                    "--changed-per-zone", "1", "--seed", "7"],
+                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     occ = sorted((out / "classifier").glob("*/*/*.png"))
     sdt = sorted((out / "keypoints" / "images").glob("*/*.png"))
     return occ, sdt
@@ -57,11 +57,9 @@ def check_outputs(models: Path, manifest: dict, cpp: dict, raw_dir: Path) -> lis
     opts.intra_op_num_threads = 1
     failures = []
     cls = ort.InferenceSession(str(models / manifest["classifier"]["file"]), opts)
-    n = manifest["classifier"]["input"]["normalize"]
     worst = 0.0
     for r in cpp["occupancy"]:
-        grey = np.asarray(Image.open(r["image"]).convert("L"), dtype=np.float32)
-        x = ((grey * n["scale"] - n["mean"]) / n["std"])[None, None]
+        x = classifier_input(manifest, Image.open(r["image"]).convert("L"))
         py = cls.run(None, {manifest["classifier"]["input"]["name"]: x})[0][0]
         worst = max(worst, float(np.abs(py - np.asarray(r["probabilities"])).max()))
     print(f"classifier: {len(cpp['occupancy'])} images, max |p_python - p_cpp| = {worst:.2e} "

@@ -32,6 +32,8 @@ DEFAULT_SAMPLES_PER_ZONE = 1000
 DEFAULT_CHANGED_PER_ZONE = 150
 # Landmark coordinates are written with 10 digits; a fresh card must give the models' own points.
 LANDMARK_TOLERANCE_M = 1e-6
+# Submap sizes and the SDT clip in a fresh card against the manifest's [m].
+FLOAT_TOLERANCE = 1e-9
 
 
 class RecheckError(Exception):
@@ -88,12 +90,10 @@ def dataset_command(m: dict, args, source: list, landmarks_yaml: Path, dataset_d
     d = m["dataset"]
     scenario = d.get("scenario") or {}
     block_m = (d.get("split") or {}).get("block_m", DEFAULT_BLOCK_M)
-    cmd = [Path(args.bin_dir) / "krp-dataset", *source, "--lidar", m["lidar"]["name"],
+    cmd = [Path(args.bin_dir) / "krp-dataset", *source, *manifest_io.rendering_args(m),
            "--out", dataset_dir, "--samples-per-zone", args.samples_per_zone,
            "--changed-per-zone", args.changed_per_zone, "--strength", scenario.get("strength", 1.0),
-           "--landmarks", landmarks_yaml, "--size-px", m["submap"]["size_px"], "--size-m", m["submap"]["size_m"],
-           "--sdt-clip-m", m["sdt_clip_m"], "--orientation", m["submap"].get("orientation", "heading_up"),
-           "--block-m", block_m, "--seed", args.seed, "--split-seed", d["seed"]]
+           "--landmarks", landmarks_yaml, "--block-m", block_m, "--seed", args.seed, "--split-seed", d["seed"]]
     if args.map is not None and (Path(args.models) / "zones.yaml").exists():
         cmd += ["--zones", Path(args.models) / "zones.yaml"]
     return [str(c) for c in cmd]
@@ -105,6 +105,13 @@ def shown(cmd: list) -> str:
     return " ".join(shlex.quote(c[len(root):] if c.startswith(root) else c) for c in cmd)
 
 
+def _same(have, want) -> bool:
+    """Equal, or for lengths in metres equal to well below any cell (JSON round trips floats)."""
+    if isinstance(want, float) and isinstance(have, (int, float)):
+        return abs(have - want) < FLOAT_TOLERANCE
+    return have == want
+
+
 def check_card(m: dict, card: dict) -> None:
     """What krp-dataset rendered must be what the models were trained on, field by field."""
     problems = []
@@ -113,10 +120,9 @@ def check_card(m: dict, card: dict) -> None:
     if card["lidar"]["name"] != m["lidar"]["name"]:
         problems.append(f"lidar {card['lidar']['name']} (the models: {m['lidar']['name']})")
     for key in ("size_px", "size_m", "resolution_m", "orientation"):
-        if key in m["submap"] and card["submap"].get(key) != m["submap"][key]:
-            if not (isinstance(m["submap"][key], float) and abs(card["submap"][key] - m["submap"][key]) < 1e-9):
-                problems.append(f"submap {key} {card['submap'].get(key)} (the models: {m['submap'][key]})")
-    if abs(card["sdt_clip_m"] - m["sdt_clip_m"]) > 1e-9:
+        if key in m["submap"] and not _same(card["submap"].get(key), m["submap"][key]):
+            problems.append(f"submap {key} {card['submap'].get(key)} (the models: {m['submap'][key]})")
+    if not _same(card["sdt_clip_m"], m["sdt_clip_m"]):
         problems.append(f"SDT clip {card['sdt_clip_m']} m (the models: {m['sdt_clip_m']} m)")
     if problems:
         raise RecheckError("the fresh dataset does not render what the models were trained on: " + "; ".join(problems))
@@ -141,12 +147,10 @@ def classifier_scores(onnx_path: Path, m: dict, images: "ImageSet", label: str) 
     if len(images) == 0:
         return {"images": 0, "accuracy": None, "confusion": confusion.tolist()}
     session = ort.InferenceSession(str(onnx_path), providers=["CPUExecutionProvider"])
-    spec = m["classifier"]["input"]
-    norm = spec["normalize"]
+    name = m["classifier"]["input"]["name"]
     for img, zone in tqdm(zip(images.images.numpy(), images.labels.tolist()), total=len(images),
                           desc=f"classifier {label}", unit="img"):
-        x = ((img.astype(np.float32) * norm["scale"] - norm["mean"]) / norm["std"])[None]
-        probs = session.run(None, {spec["name"]: x})[0][0]
+        probs = session.run(None, {name: manifest_io.classifier_input(m, img[0])})[0][0]
         confusion[zone, int(np.argmax(probs))] += 1
     return {"images": int(confusion.sum()), "accuracy": float(np.trace(confusion) / confusion.sum()),
             "confusion": confusion.tolist()}

@@ -148,8 +148,10 @@ def main(argv=None) -> int:
     cp = train_classifier.ClassifierParams(architecture=args.classifier, epochs=args.classifier_epochs,
                                            seed=args.seed, device=device,
                                            augment=AugmentParams(max_rotation_deg=rotation))
-    kp_images = n_train if args.keypoint_train_images <= 0 else min(n_train, args.keypoint_train_images)
-    rest = estimate_rest_s(n_train, cp.epochs, kp_images, args.keypoint_epochs)
+    # The keypoint model's images are drawn now, so that one estimate counts what it will train on.
+    kp_yaml, n_kp_train = train_keypoints.limit_training_images(dataset_dir / "keypoints" / "data.yaml", work,
+                                                                args.keypoint_train_images, args.seed)
+    rest = estimate_rest_s(n_train, cp.epochs, n_kp_train, args.keypoint_epochs)
     if device == "cpu":
         _print_estimate(rest)
     est = rest["classifier"] if device == "cpu" else None
@@ -172,10 +174,7 @@ def main(argv=None) -> int:
     kp = train_keypoints.KeypointParams(epochs=args.keypoint_epochs, seed=args.seed, rotation_deg=rotation,
                                         device="0" if device == "cuda" else "cpu")
     img_px = int(card["submap"]["size_px"])
-    kp_yaml, n_kp_train = train_keypoints.limit_training_images(dataset_dir / "keypoints" / "data.yaml", work,
-                                                                args.keypoint_train_images, args.seed)
-    est = estimate_rest_s(0, 0, n_kp_train, kp.epochs)["keypoints"] if device == "cpu" else None
-    with timer.stage("keypoints", est):
+    with timer.stage("keypoints", rest["keypoints"] if device == "cpu" else None):
         kpr = train_keypoints.train(kp_yaml, work, kp, img_px)
     if (kpr.run_dir / "results.csv").exists():
         plots.keypoint_curves(kpr.run_dir / "results.csv", f"{name}: keypoint model (YOLOv8n-pose)",
