@@ -76,8 +76,8 @@ def limit_training_images(data_yaml: Path, work_dir: Path, max_images: int, seed
     is at most `max_images` images drawn with `seed`, or the yaml itself when the split is no
     larger or `max_images` is 0.
 
-    The classifier learns from every image, but a YOLO epoch on a CPU costs about 0.08 s per image
-    (train_map.SECONDS_PER_IMAGE_EPOCH):
+    The classifier learns from every image, but a YOLO epoch on a 2-core CPU costs 0.015 to 0.08 s
+    per image, by machine (train_map.SECONDS_PER_IMAGE_EPOCH):
     the cap keeps krp-train-map's keypoint stage inside its time budget however large the dataset.
     """
     doc = yaml.safe_load(Path(data_yaml).read_text())

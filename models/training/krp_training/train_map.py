@@ -17,7 +17,8 @@ from pathlib import Path
 import torch
 import yaml
 
-from . import classifier_models, export, keypoint_error, manifest, plots, report, train_classifier, train_keypoints
+from . import (classifier_models, export, keypoint_error, machine_speed, manifest, plots, report, train_classifier,
+               train_keypoints)
 from .augment import AugmentParams, max_rotation_deg
 from .image_folders import SPLITS, read_split
 from .stage_timer import StageTimer, duration
@@ -25,11 +26,14 @@ from .stage_timer import StageTimer, duration
 REPO_ROOT = Path(__file__).resolve().parents[3]
 DEFAULT_BIN_DIR = REPO_ROOT / "build" / "mrpt_krp_plugin" / "apps"
 
-# Measured on 2 CPU cores, to give a first time estimate before the progress bars take over with
-# their own: the shipped office and warehouse models' stage times (manifest.json) took 0.0069 and
-# 0.0107 s per classifier image-epoch and 0.080 and 0.072 s per keypoint image-epoch.
-SECONDS_PER_IMAGE_EPOCH = {"compact": 0.009, "yolo": 0.076}
-# The keypoint model's training images: 600 x 40 epochs is ~30 min of a 2-core CPU.
+# Per-image costs for a first time estimate, before the progress bars take over with their own:
+# the large_floor models' stage times (1,000 poses per zone, 2 idle CPU cores): 296 s for
+# 15,478 classifier images x 15 epochs, 362 s for 600 keypoint images x 40 epochs. On the same
+# machine machine_speed.probe_step_seconds() read 0.049 s (0.047 to 0.056 in three runs); the
+# estimate scales the costs by this machine's probe against that (see machine_speed.py).
+SECONDS_PER_IMAGE_EPOCH = {"compact": 0.0013, "yolo": 0.015}
+REFERENCE_PROBE_S = 0.049
+# The keypoint model's training images: 600 x 40 epochs took 6 to 30 min of a 2-core CPU.
 KEYPOINT_TRAIN_IMAGES = 600
 
 
@@ -86,18 +90,22 @@ def _dataset_command(args, bin_dir: Path, dataset_dir: Path) -> list:
 
 
 def estimate_rest_s(n_classifier_images: int, classifier_epochs: int, n_keypoint_images: int,
-                    keypoint_epochs: int) -> dict:
-    """Seconds the two training stages should take on a 2-core CPU, from the measured per-image costs."""
-    return {"classifier": n_classifier_images * classifier_epochs * SECONDS_PER_IMAGE_EPOCH["compact"],
-            "keypoints": n_keypoint_images * keypoint_epochs * SECONDS_PER_IMAGE_EPOCH["yolo"]}
+                    keypoint_epochs: int, slowdown: float = 1.0) -> dict:
+    """Seconds the two training stages should take on a CPU `slowdown` times slower than the one that
+    measured the per-image costs."""
+    if not slowdown > 0:
+        raise ValueError(f"estimate_rest_s: slowdown must be > 0, not {slowdown}")
+    return {"classifier": n_classifier_images * classifier_epochs * SECONDS_PER_IMAGE_EPOCH["compact"] * slowdown,
+            "keypoints": n_keypoint_images * keypoint_epochs * SECONDS_PER_IMAGE_EPOCH["yolo"] * slowdown}
 
 
-def _print_estimate(est: dict) -> None:
+def _print_estimate(est: dict, slowdown: float) -> None:
     """Once the dataset is made the image counts are known: the whole wait, before it starts."""
     parts = ", ".join(f"{k} {duration(v)}" for k, v in est.items())
-    print(f"[krp-train-map] estimate for the rest on a 2-core CPU: {parts}, about {duration(sum(est.values()))} "
-          "in all (--samples-per-zone, --classifier-epochs, --keypoint-train-images and --keypoint-epochs trade "
-          "accuracy for time)", file=sys.stderr, flush=True)
+    print(f"[krp-train-map] estimate for the rest on this CPU (measured {slowdown:.2g}x the time of the machine "
+          f"the costs come from): {parts}, about {duration(sum(est.values()))} in all (--samples-per-zone, "
+          "--classifier-epochs, --keypoint-train-images and --keypoint-epochs trade accuracy for time)",
+          file=sys.stderr, flush=True)
 
 
 def _device(choice: str) -> str:
@@ -151,11 +159,12 @@ def main(argv=None) -> int:
     # The keypoint model's images are drawn now, so that one estimate counts what it will train on.
     kp_yaml, n_kp_train = train_keypoints.limit_training_images(dataset_dir / "keypoints" / "data.yaml", work,
                                                                 args.keypoint_train_images, args.seed)
-    rest = estimate_rest_s(n_train, cp.epochs, n_kp_train, args.keypoint_epochs)
+    rest = None  # a GPU's progress bars are estimate enough
     if device == "cpu":
-        _print_estimate(rest)
-    est = rest["classifier"] if device == "cpu" else None
-    with timer.stage("classifier", est):
+        slowdown = machine_speed.probe_step_seconds(input_px=sets["train"].images.shape[-1]) / REFERENCE_PROBE_S
+        rest = estimate_rest_s(n_train, cp.epochs, n_kp_train, args.keypoint_epochs, slowdown)
+        _print_estimate(rest, slowdown)
+    with timer.stage("classifier", rest["classifier"] if rest else None):
         cls = train_classifier.train(sets["train"], sets["val"], len(zones), cp)
     evaluated = {s: train_classifier.evaluate(cls.model, sets[s], len(zones), device)
                  for s in ("val", "test", "changed")}
@@ -174,7 +183,7 @@ def main(argv=None) -> int:
     kp = train_keypoints.KeypointParams(epochs=args.keypoint_epochs, seed=args.seed, rotation_deg=rotation,
                                         device="0" if device == "cuda" else "cpu")
     img_px = int(card["submap"]["size_px"])
-    with timer.stage("keypoints", rest["keypoints"] if device == "cpu" else None):
+    with timer.stage("keypoints", rest["keypoints"] if rest else None):
         kpr = train_keypoints.train(kp_yaml, work, kp, img_px)
     if (kpr.run_dir / "results.csv").exists():
         plots.keypoint_curves(kpr.run_dir / "results.csv", f"{name}: keypoint model (YOLOv8n-pose)",

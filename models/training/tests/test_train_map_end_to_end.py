@@ -4,6 +4,7 @@ import subprocess
 
 import numpy as np
 import onnxruntime as ort
+import pytest
 
 from krp_training import train_map
 
@@ -100,6 +101,27 @@ def test_the_estimate_scales_with_images_and_epochs():
     assert one["keypoints"] == 600 * 40 * train_map.SECONDS_PER_IMAGE_EPOCH["yolo"]
     double = train_map.estimate_rest_s(2000, 10, 600, 80)
     assert double["classifier"] == 2 * one["classifier"] and double["keypoints"] == 2 * one["keypoints"]
+
+
+def test_the_estimate_scales_with_the_machines_measured_slowdown():
+    one = train_map.estimate_rest_s(1000, 10, 600, 40)
+    slower = train_map.estimate_rest_s(1000, 10, 600, 40, slowdown=3.0)
+    assert slower["classifier"] == pytest.approx(3 * one["classifier"])
+    assert slower["keypoints"] == pytest.approx(3 * one["keypoints"])
+    for bad in (0.0, -1.0, float("nan")):
+        with pytest.raises(ValueError, match="slowdown"):
+            train_map.estimate_rest_s(1000, 10, 600, 40, slowdown=bad)
+
+
+def test_the_speed_probe_times_a_real_training_step():
+    from krp_training import machine_speed
+    small = machine_speed.probe_step_seconds(input_px=32, steps=2)
+    assert 0 < small < 10
+    # Twenty-five times the pixels cannot train faster: the probe measures work, not a constant.
+    large = machine_speed.probe_step_seconds(input_px=160, steps=2)
+    assert large > small
+    with pytest.raises(ValueError, match="steps"):
+        machine_speed.probe_step_seconds(steps=0)
 
 
 def test_short_estimates_read_in_seconds_and_long_ones_in_minutes():
