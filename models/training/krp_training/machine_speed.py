@@ -26,6 +26,10 @@ def probe_step_seconds(input_px: int = 160, steps: int = PROBE_STEPS, device: st
     on random submap-sized images, with torch's current thread settings."""
     if steps < 1:
         raise ValueError("probe_step_seconds: steps must be >= 1")
+    # The compact classifier takes only multiples of its stride; a submap of another size (which
+    # another architecture may train on) is probed at the nearest one: the probe times the machine.
+    stride = classifier_models.CompactNet.STRIDE
+    input_px = max(stride, round(input_px / stride) * stride)
     gen = torch.Generator().manual_seed(0)
     model = classifier_models.build("compact", PROBE_CLASSES, input_px=input_px).to(device)
     model.train()

@@ -122,6 +122,8 @@ def test_the_speed_probe_times_a_real_training_step():
     assert large > small
     with pytest.raises(ValueError, match="steps"):
         machine_speed.probe_step_seconds(steps=0)
+    # A submap side the compact classifier cannot take is probed at the nearest one it can.
+    assert machine_speed.probe_step_seconds(input_px=150, steps=1) > 0
 
 
 def test_short_estimates_read_in_seconds_and_long_ones_in_minutes():
