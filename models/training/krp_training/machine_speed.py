@@ -15,15 +15,17 @@ import torch
 from torch import nn
 
 from . import classifier_models
+from .train_classifier import ClassifierParams
 
-PROBE_BATCH = 32  # krp-train-map's classifier batch
+PROBE_BATCH = ClassifierParams.batch_size  # the batch the classifier trains with
 PROBE_STEPS = 5  # timed steps, after one untimed warm-up step; the median is kept
 PROBE_CLASSES = 4
 
 
-def probe_step_seconds(input_px: int = 160, steps: int = PROBE_STEPS, device: str = "cpu") -> float:
+def probe_step_seconds(input_px: int = 160, steps: int = PROBE_STEPS) -> float:
     """Median wall seconds of one training step (forward, backward, SGD update) of the compact classifier
-    on random submap-sized images, with torch's current thread settings."""
+    on random submap-sized images, on the CPU with torch's current thread settings (a GPU run needs no
+    estimate: its progress bars come fast enough)."""
     if steps < 1:
         raise ValueError("probe_step_seconds: steps must be >= 1")
     # The compact classifier takes only multiples of its stride; a submap of another size (which
@@ -31,20 +33,18 @@ def probe_step_seconds(input_px: int = 160, steps: int = PROBE_STEPS, device: st
     stride = classifier_models.CompactNet.STRIDE
     input_px = max(stride, round(input_px / stride) * stride)
     gen = torch.Generator().manual_seed(0)
-    model = classifier_models.build("compact", PROBE_CLASSES, input_px=input_px).to(device)
+    model = classifier_models.build("compact", PROBE_CLASSES, input_px=input_px)
     model.train()
     opt = torch.optim.SGD(model.parameters(), lr=0.01, momentum=0.9)
     loss_fn = nn.CrossEntropyLoss()
-    x = torch.rand((PROBE_BATCH, 1, input_px, input_px), generator=gen).to(device)
-    y = torch.randint(0, PROBE_CLASSES, (PROBE_BATCH,), generator=gen).to(device)
+    x = torch.rand((PROBE_BATCH, 1, input_px, input_px), generator=gen)
+    y = torch.randint(0, PROBE_CLASSES, (PROBE_BATCH,), generator=gen)
     times = []
     for step in range(steps + 1):
         t0 = time.perf_counter()
         opt.zero_grad()
         loss_fn(model(x), y).backward()
         opt.step()
-        if device != "cpu":
-            torch.cuda.synchronize()
         if step > 0:  # the first step allocates and picks kernels
             times.append(time.perf_counter() - t0)
     return statistics.median(times)
