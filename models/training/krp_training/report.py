@@ -70,9 +70,18 @@ def _keypoint_section(m):
               f"changed: {k['changed']['keypoint_error']['right_zone']} of "
               f"{k['changed']['keypoint_error']['images']}).", "",
               *_identity_mistakes(k),
-              f"Training: {k['epochs']} epochs, {k['train_seconds']:.0f} s.", "",
+              _keypoint_training_line(m), "",
               "![keypoint curves](figures/keypoint_curves.png)", ""]
     return lines
+
+
+def _keypoint_training_line(m):
+    # Older manifests do not record how many images the keypoint model saw; their command line does.
+    k = m["keypoints"]["metrics"]
+    seen = ""
+    if "train_images" in k:
+        seen = f" on {k['train_images']} of {m['classifier']['metrics']['images']['train']} training images"
+    return f"Training: {k['epochs']} epochs{seen}, {k['train_seconds']:.0f} s."
 
 
 def _latency_section(folder: Path, m, name: str):

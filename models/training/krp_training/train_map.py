@@ -194,7 +194,7 @@ def main(argv=None) -> int:
         kp_onnx = export.export_keypoints(kpr.weights, img_px, partial / "keypoints.onnx", work)
 
     with timer.stage("evaluate"):
-        kp_metrics = {"train_seconds": kpr.seconds, "epochs": kp.epochs}
+        kp_metrics = {"train_seconds": kpr.seconds, "epochs": kp.epochs, "train_images": n_kp_train}
         for s in ("test", "changed"):
             kp_metrics[s] = train_keypoints.evaluate(partial / "keypoints.onnx", dataset_dir / "keypoints", s,
                                                      img_px, work)

@@ -40,6 +40,10 @@ def test_tiny_train_and_export(tmp_path, bin_dir):
         assert (out / "figures" / fig).stat().st_size > 0
     report = (out / "REPORT.md").read_text()
     assert "Zone classifier" in report and "Keypoint model" in report
+    # Every training image is used at this size (the 600-image cap is above the split).
+    n_train = m["classifier"]["metrics"]["images"]["train"]
+    assert m["keypoints"]["metrics"]["train_images"] == n_train
+    assert f"on {n_train} of {n_train} training images" in report
 
     # The C++ runtime reads what Python wrote.
     res = subprocess.run([str(bin_dir / "krp-infer"), "--models", str(out), "--latency", "3"], capture_output=True,
