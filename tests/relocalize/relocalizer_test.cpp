@@ -28,6 +28,28 @@ const std::string kWorld = std::string(KRP_SOURCE_DIR) + "/sim_worlds/office_two
 
 using test::inputErrorMessage;
 
+// A copy of the shipped models as krp-train-map wrote them before it kept the zones beside the
+// models: no zones.yaml and none named in the manifest, so the zone search needs the user's zones.
+class ModelsWithoutZoneOutlines {
+ public:
+  explicit ModelsWithoutZoneOutlines(const std::string& tag)
+      : dir_(std::filesystem::temp_directory_path() / ("krp_" + tag + "_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(dir_);
+    std::filesystem::copy(kModels, dir_, std::filesystem::copy_options::recursive);
+    std::filesystem::remove(dir_ / "zones.yaml");
+    nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir_ / "manifest.json"));
+    manifest.erase("zone_outlines");
+    std::ofstream(dir_ / "manifest.json") << manifest.dump();
+  }
+  ~ModelsWithoutZoneOutlines() { std::filesystem::remove_all(dir_); }
+  ModelsWithoutZoneOutlines(const ModelsWithoutZoneOutlines&) = delete;
+  ModelsWithoutZoneOutlines& operator=(const ModelsWithoutZoneOutlines&) = delete;
+  std::filesystem::path path() const { return dir_; }
+
+ private:
+  std::filesystem::path dir_;
+};
+
 // The shipped office models were trained for omni_12m (360 deg, 12 m) on a 0.05 m map.
 TEST(Relocalizer, RefusesScansFromAnotherLidar) {
   const auto world = readWorld(kWorld);
@@ -68,8 +90,10 @@ TEST(Relocalizer, RefusesZonesThatAreNotTheModels) {
   zones[1].name = "lobby";
   const auto message = inputErrorMessage([&] { Relocalizer(kModels, *map.grid, {}, zones); });
   EXPECT_NE(message.find("no zone named 'east_wing'"), std::string::npos) << message;
-  EXPECT_FALSE(Relocalizer(kModels, *map.grid).hasZoneSearch());
-  EXPECT_TRUE(Relocalizer(kModels, *map.grid, {}, readZonesYaml(world.zones_path)).hasZoneSearch());
+  EXPECT_TRUE(Relocalizer(kModels, *map.grid).hasZoneSearch());  // the zones beside the shipped models
+  const ModelsWithoutZoneOutlines bare("zones_not_the_models");
+  EXPECT_FALSE(Relocalizer(bare.path().string(), *map.grid).hasZoneSearch());
+  EXPECT_TRUE(Relocalizer(bare.path().string(), *map.grid, {}, readZonesYaml(world.zones_path)).hasZoneSearch());
 }
 
 // krp-train-map copies the zones beside the models and names them in the manifest: the zone
@@ -82,6 +106,7 @@ TEST(Relocalizer, ReadsTheZonesBesideTheModels) {
   const fs::path dir = fs::temp_directory_path() / ("krp_zones_beside_models_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::copy(kModels, dir, fs::copy_options::recursive);
+  fs::remove(dir / "zones.yaml");  // named in the manifest below, but missing
   nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "manifest.json"));
   manifest["zone_outlines"] = {{"file", "zones.yaml"}, {"sha256", "not checked"}};
   std::ofstream(dir / "manifest.json") << manifest.dump();
@@ -105,7 +130,8 @@ TEST(Relocalizer, ZoneSearchAnswersWhenTheKeypointsGiveNothing) {
   params.top_zones = 0;
   params.cross_check.when_not_localized = false;  // the zone search's own answer, unchecked
   const auto zones = readZonesYaml(world.zones_path);
-  const Relocalizer with_search(kModels, *map.grid, params, zones), without(kModels, *map.grid, params);
+  const ModelsWithoutZoneOutlines bare("keypoints_give_nothing");
+  const Relocalizer with_search(kModels, *map.grid, params, zones), without(bare.path().string(), *map.grid, params);
   const ZoneIndex index(*map.grid, zones);
   Rng rng(3);
   int searched = 0, right = 0;
