@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "support/input_error_message.h"
+#include "support/test_maps.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/relocalize/relocalizer.h"
@@ -30,25 +30,15 @@ using test::inputErrorMessage;
 
 // A copy of the shipped models as krp-train-map wrote them before it kept the zones beside the
 // models: no zones.yaml and none named in the manifest, so the zone search needs the user's zones.
-class ModelsWithoutZoneOutlines {
- public:
-  explicit ModelsWithoutZoneOutlines(const std::string& tag)
-      : dir_(std::filesystem::temp_directory_path() / ("krp_" + tag + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(dir_);
-    std::filesystem::copy(kModels, dir_, std::filesystem::copy_options::recursive);
-    std::filesystem::remove(dir_ / "zones.yaml");
-    nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir_ / "manifest.json"));
-    manifest.erase("zone_outlines");
-    std::ofstream(dir_ / "manifest.json") << manifest.dump();
-  }
-  ~ModelsWithoutZoneOutlines() { std::filesystem::remove_all(dir_); }
-  ModelsWithoutZoneOutlines(const ModelsWithoutZoneOutlines&) = delete;
-  ModelsWithoutZoneOutlines& operator=(const ModelsWithoutZoneOutlines&) = delete;
-  std::filesystem::path path() const { return dir_; }
-
- private:
-  std::filesystem::path dir_;
-};
+std::string modelsWithoutZoneOutlines(const std::string& name) {
+  const std::filesystem::path dir = test::tempDir(name);
+  std::filesystem::copy(kModels, dir, std::filesystem::copy_options::recursive);
+  std::filesystem::remove(dir / "zones.yaml");
+  nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "manifest.json"));
+  manifest.erase("zone_outlines");
+  std::ofstream(dir / "manifest.json") << manifest.dump();
+  return dir.string();
+}
 
 // The shipped office models were trained for omni_12m (360 deg, 12 m) on a 0.05 m map.
 TEST(Relocalizer, RefusesScansFromAnotherLidar) {
@@ -91,9 +81,9 @@ TEST(Relocalizer, RefusesZonesThatAreNotTheModels) {
   const auto message = inputErrorMessage([&] { Relocalizer(kModels, *map.grid, {}, zones); });
   EXPECT_NE(message.find("no zone named 'east_wing'"), std::string::npos) << message;
   EXPECT_TRUE(Relocalizer(kModels, *map.grid).hasZoneSearch());  // the zones beside the shipped models
-  const ModelsWithoutZoneOutlines bare("zones_not_the_models");
-  EXPECT_FALSE(Relocalizer(bare.path().string(), *map.grid).hasZoneSearch());
-  EXPECT_TRUE(Relocalizer(bare.path().string(), *map.grid, {}, readZonesYaml(world.zones_path)).hasZoneSearch());
+  const auto bare = modelsWithoutZoneOutlines("zones_not_the_models");
+  EXPECT_FALSE(Relocalizer(bare, *map.grid).hasZoneSearch());
+  EXPECT_TRUE(Relocalizer(bare, *map.grid, {}, readZonesYaml(world.zones_path)).hasZoneSearch());
 }
 
 // krp-train-map copies the zones beside the models and names them in the manifest: the zone
@@ -103,10 +93,7 @@ TEST(Relocalizer, ReadsTheZonesBesideTheModels) {
   namespace fs = std::filesystem;
   const auto world = readWorld(kWorld);
   const auto map = loadOccupancyMap(world.map_path);
-  const fs::path dir = fs::temp_directory_path() / ("krp_zones_beside_models_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::copy(kModels, dir, fs::copy_options::recursive);
-  fs::remove(dir / "zones.yaml");  // named in the manifest below, but missing
+  const fs::path dir = modelsWithoutZoneOutlines("zones_beside_models");  // zones.yaml named below, but missing
   nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "manifest.json"));
   manifest["zone_outlines"] = {{"file", "zones.yaml"}, {"sha256", "not checked"}};
   std::ofstream(dir / "manifest.json") << manifest.dump();
@@ -118,7 +105,6 @@ TEST(Relocalizer, ReadsTheZonesBesideTheModels) {
   RelocalizerParams off;
   off.zone_search.zones = 0;
   EXPECT_FALSE(Relocalizer(dir.string(), *map.grid, off).hasZoneSearch());
-  fs::remove_all(dir);
 }
 
 // With the keypoints switched off (no zone's detections used) only the zone search can answer:
@@ -130,8 +116,8 @@ TEST(Relocalizer, ZoneSearchAnswersWhenTheKeypointsGiveNothing) {
   params.top_zones = 0;
   params.cross_check.when_not_localized = false;  // the zone search's own answer, unchecked
   const auto zones = readZonesYaml(world.zones_path);
-  const ModelsWithoutZoneOutlines bare("keypoints_give_nothing");
-  const Relocalizer with_search(kModels, *map.grid, params, zones), without(bare.path().string(), *map.grid, params);
+  const Relocalizer with_search(kModels, *map.grid, params, zones),
+      without(modelsWithoutZoneOutlines("keypoints_give_nothing"), *map.grid, params);
   const ZoneIndex index(*map.grid, zones);
   Rng rng(3);
   int searched = 0, right = 0;
