@@ -10,6 +10,11 @@ INSIDE = 1  # inside the image but not seen: its label position is still the lan
 # A keypoint further than this from its own landmark but within it of another landmark in the image
 # has been given the other landmark's name: an identity mistake, not an imprecise position [m].
 SWAP_RADIUS_M = 0.5
+# A landmark whose observed keypoints are off by more than this at the median has not been learned:
+# the model puts it somewhere else on nearly every image, rather than imprecisely on some [m].
+UNLEARNED_MEDIAN_M = 1.0
+# Fewer observed keypoints of one landmark than this say too little to call it unlearned.
+MIN_OBSERVED_PER_LANDMARK = 10
 
 
 def read_label(path: Path, num_keypoints: int):
@@ -44,8 +49,26 @@ def errors_and_swaps(pred_px: np.ndarray, truth: np.ndarray, imgsz: int, resolut
     return np.asarray(errors, dtype=np.float64), np.asarray(swapped, dtype=bool)
 
 
+def per_landmark(zones, indices, errors_m, zone_names) -> list:
+    """Error of each landmark's observed keypoints, worst median first: [{zone, keypoint, observed,
+    median_m, mean_m, unlearned}] from parallel sequences of zone index, keypoint index and error.
+
+    A mean over all keypoints hides whether a few landmarks are never found or all are imprecise;
+    which of the two it is decides what to fix."""
+    groups = {}
+    for z, k, e in zip(zones, indices, errors_m):
+        groups.setdefault((int(z), int(k)), []).append(float(e))
+    rows = []
+    for (z, k), errs in groups.items():
+        median = float(np.median(errs))
+        rows.append({"zone": zone_names[z], "keypoint": k, "observed": len(errs), "median_m": median,
+                     "mean_m": float(np.mean(errs)),
+                     "unlearned": bool(len(errs) >= MIN_OBSERVED_PER_LANDMARK and median > UNLEARNED_MEDIAN_M)})
+    return sorted(rows, key=lambda r: -r["median_m"])
+
+
 def mean_keypoint_error(model_path: Path, dataset_dir: Path, split: str, imgsz: int, resolution_m: float,
-                        num_keypoints: int, work_dir: Path, conf: float = 0.25) -> dict:
+                        num_keypoints: int, work_dir: Path, conf: float = 0.25, zone_names=None) -> dict:
     """Runs the model on every image of the split; the highest-scoring detection is the answer.
 
     Errors count only images whose top detection names the right zone (a wrong zone's keypoints are
@@ -58,6 +81,7 @@ def mean_keypoint_error(model_path: Path, dataset_dir: Path, split: str, imgsz: 
     model = YOLO(str(model_path), task="pose")
     images = sorted((Path(dataset_dir) / "keypoints" / "images" / split).glob("*.png"))
     errors, swaps, right_zone, detected, background = [], [], 0, 0, 0
+    error_zone, error_keypoint = [], []  # which landmark each error belongs to
     for start in range(0, len(images), 32):
         chunk = images[start:start + 32]
         for img, res in zip(chunk, model.predict([str(p) for p in chunk], imgsz=imgsz, conf=conf, device="cpu",
@@ -78,8 +102,17 @@ def mean_keypoint_error(model_path: Path, dataset_dir: Path, split: str, imgsz: 
             e, sw = errors_and_swaps(res.keypoints.xy[top].cpu().numpy(), truth, imgsz, resolution_m)
             errors.extend(e.tolist())
             swaps.extend(sw.tolist())
+            error_zone.extend([zone] * len(e))
+            error_keypoint.extend(np.flatnonzero(truth[:, 2] == OBSERVED).tolist())
     errors_m, swaps = np.asarray(errors), np.asarray(swaps, dtype=bool)
     rest = errors_m[~swaps]
+    names = list(zone_names) if zone_names is not None else [str(z) for z in range(max(error_zone, default=-1) + 1)]
+    landmarks = per_landmark(error_zone, error_keypoint, errors_m, names)
+    unlearned = [r for r in landmarks if r["unlearned"]]
+    learned = np.ones(errors_m.size, dtype=bool)
+    for r in unlearned:
+        z = names.index(r["zone"])
+        learned &= ~((np.asarray(error_zone) == z) & (np.asarray(error_keypoint) == r["keypoint"]))
     return {
         "images": len(images),
         "background_images": background,
@@ -94,4 +127,10 @@ def mean_keypoint_error(model_path: Path, dataset_dir: Path, split: str, imgsz: 
         "on_another_landmark": int(swaps.sum()),
         "mean_error_not_swapped_m": float(rest.mean()) if rest.size else None,
         "median_error_not_swapped_m": float(np.median(rest)) if rest.size else None,
+        # Landmarks the model puts elsewhere on nearly every image, and the error of all the others.
+        "unlearned_median_m": UNLEARNED_MEDIAN_M,
+        "per_landmark": landmarks,
+        "unlearned_landmarks": [f"{r['zone']} #{r['keypoint']}" for r in unlearned],
+        "mean_error_learned_landmarks_m": float(errors_m[learned].mean()) if learned.any() else None,
+        "median_error_learned_landmarks_m": float(np.median(errors_m[learned])) if learned.any() else None,
     }

@@ -169,7 +169,7 @@ def measure(models: Path, m: dict, dataset_dir: Path, work: Path) -> dict:
     for split in ("test", "changed"):
         scores = train_keypoints.evaluate(kp_onnx, dataset_dir / "keypoints", split, img_px, work)
         scores["keypoint_error"] = keypoint_error.mean_keypoint_error(
-            kp_onnx, dataset_dir, split, img_px, float(m["submap"]["resolution_m"]), k, work)
+            kp_onnx, dataset_dir, split, img_px, float(m["submap"]["resolution_m"]), k, work, zone_names=zones)
         out["keypoints"][split] = scores
     return out
 

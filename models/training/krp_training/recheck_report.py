@@ -1,6 +1,8 @@
 """RECHECK.md: a model folder's reported numbers beside the same numbers on fresh data."""
 from pathlib import Path
 
+from .keypoint_error import UNLEARNED_MEDIAN_M
+
 # The targets of the learning pipeline (issue 3), printed beside the measurements.
 TARGET_TEST_ACCURACY = 0.99
 TARGET_CHANGED_ACCURACY = 0.95
@@ -42,6 +44,13 @@ def _classifier_table(result: dict) -> list:
     return lines
 
 
+def _names(v) -> str:
+    """A list of landmark names; '-' for a result measured before landmarks were told apart."""
+    if v is None:
+        return "-"
+    return ", ".join(v) if v else "none"
+
+
 def _keypoint_rows(result: dict) -> list:
     shipped = result["shipped"]["keypoints"]
     fresh = result["fresh"]["keypoints"]
@@ -69,6 +78,9 @@ def _keypoint_rows(result: dict) -> list:
         ("of them on another landmark (identity mistakes)", ("keypoint_error", "on_another_landmark"), _count, ""),
         ("mean error, identity mistakes apart", ("keypoint_error", "mean_error_not_swapped_m"), _metres, ""),
         ("median error, identity mistakes apart", ("keypoint_error", "median_error_not_swapped_m"), _metres, ""),
+        (f"landmarks not learned (median error over {UNLEARNED_MEDIAN_M:g} m)", ("keypoint_error", "unlearned_landmarks"), _names, ""),
+        ("mean error, the other landmarks", ("keypoint_error", "mean_error_learned_landmarks_m"), _metres, ""),
+        ("median error, the other landmarks", ("keypoint_error", "median_error_learned_landmarks_m"), _metres, ""),
     ]
     lines = ["| metric | test: shipped report | test: fresh | changed: shipped report | changed: fresh | target |",
              "|---|---|---|---|---|---|"]

@@ -51,6 +51,23 @@ def _identity_mistakes(k) -> list:
             "and within it of another landmark in the image): " + "; ".join(parts) + ".", ""]
 
 
+def _unlearned_landmarks(k) -> list:
+    """Models evaluated before the per-landmark breakdown have none: nothing to say then."""
+    e = {s: k[s]["keypoint_error"] for s in ("test", "changed")}
+    if any("per_landmark" not in v for v in e.values()):
+        return []
+    parts = []
+    for s, v in e.items():
+        bad = [r for r in v["per_landmark"] if r["unlearned"]]
+        names = ", ".join(f"{r['zone']} #{r['keypoint']} ({r['observed']} observed, median {_f(r['median_m'], 1)} m)"
+                          for r in bad) or "none"
+        parts.append(f"{s}: {names}; the other landmarks' keypoints {_f(v['mean_error_learned_landmarks_m'])} m mean / "
+                     f"{_f(v['median_error_learned_landmarks_m'])} m median")
+    return [f"Landmarks not learned (the median error of their observed keypoints is over "
+            f"{e['test']['unlearned_median_m']} m: the model puts them elsewhere on nearly every image): "
+            + "; ".join(parts) + ".", ""]
+
+
 def _keypoint_section(m):
     k = m["keypoints"]["metrics"]
     lines = ["## Keypoint model (shipped: `keypoints.onnx`, YOLOv8n-pose; Table 4.3's analogue)", "",
@@ -70,6 +87,7 @@ def _keypoint_section(m):
               f"changed: {k['changed']['keypoint_error']['right_zone']} of "
               f"{k['changed']['keypoint_error']['images']}).", "",
               *_identity_mistakes(k),
+              *_unlearned_landmarks(k),
               _keypoint_training_line(m), "",
               "![keypoint curves](figures/keypoint_curves.png)", ""]
     return lines

@@ -57,11 +57,17 @@ def parse_args(argv):
     p.add_argument("--keypoint-train-images", type=int, default=KEYPOINT_TRAIN_IMAGES,
                    help="at most this many training images for the keypoint model, drawn with --seed "
                         "(0 = all); the classifier always gets all of them")
+    p.add_argument("--keypoint-loss-sigma", type=float, default=train_keypoints.KeypointParams.oks_sigma,
+                   help="OKS sigma of the keypoint model's training loss (0 = ultralytics' 1/K; see "
+                        "train_keypoints.KeypointParams.oks_sigma)")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--device", default="auto", help="auto (GPU when there is one), cpu or cuda")
     p.add_argument("--bin-dir", default=str(DEFAULT_BIN_DIR), help="where the built C++ apps are")
     p.add_argument("--keep-work", action="store_true", help="keep the dataset and runs after success")
-    return p.parse_args(argv)
+    args = p.parse_args(argv)
+    if not args.keypoint_loss_sigma >= 0:  # refused now, not after the dataset and the classifier
+        p.error(f"--keypoint-loss-sigma must be >= 0 (0 = ultralytics' default), not {args.keypoint_loss_sigma}")
+    return args
 
 
 def _run(cmd):
@@ -181,6 +187,7 @@ def main(argv=None) -> int:
                         partial / "figures" / f"confusion_{s}.png")
 
     kp = train_keypoints.KeypointParams(epochs=args.keypoint_epochs, seed=args.seed, rotation_deg=rotation,
+                                        oks_sigma=args.keypoint_loss_sigma,
                                         device="0" if device == "cuda" else "cpu")
     img_px = int(card["submap"]["size_px"])
     with timer.stage("keypoints", rest["keypoints"] if rest else None):
@@ -200,7 +207,7 @@ def main(argv=None) -> int:
                                                      img_px, work)
             kp_metrics[s]["keypoint_error"] = keypoint_error.mean_keypoint_error(
                 partial / "keypoints.onnx", dataset_dir, s, img_px, card["submap"]["resolution_m"],
-                int(card["landmarks"]["keypoints_per_zone"]), work)
+                int(card["landmarks"]["keypoints_per_zone"]), work, zone_names=zones)
 
     landmarks = manifest.read_landmarks(dataset_dir / "landmarks.yaml")
     training = {"command": command, "device": device, "torch": torch.__version__,

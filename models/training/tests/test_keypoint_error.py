@@ -3,7 +3,7 @@ import pytest
 
 import numpy as np
 
-from krp_training.keypoint_error import errors_and_swaps, read_label
+from krp_training.keypoint_error import UNLEARNED_MEDIAN_M, errors_and_swaps, per_landmark, read_label
 
 
 def test_a_label_gives_the_zone_and_the_keypoints(tmp_path):
@@ -47,3 +47,25 @@ def test_a_far_keypoint_near_no_landmark_is_not_a_swap():
     errors, swapped = errors_and_swaps(pred, truth, imgsz=100, resolution_m=0.1)
     assert errors[0] == pytest.approx(5.0)
     assert swapped.tolist() == [False, False]
+
+
+def test_a_landmark_put_elsewhere_on_every_image_is_unlearned():
+    # Landmark 0 of zone 0: 12 observations 0.1 m off; landmark 3 of zone 1: 12 observations 15 m off;
+    # landmark 5 of zone 1: 3 observations 15 m off, too few to judge.
+    zones = [0] * 12 + [1] * 12 + [1] * 3
+    keypoints = [0] * 12 + [3] * 12 + [5] * 3
+    errors = [0.1] * 12 + [15.0] * 12 + [15.0] * 3
+    rows = per_landmark(zones, keypoints, errors, ["west", "east"])
+    by_name = {(r["zone"], r["keypoint"]): r for r in rows}
+    assert by_name[("east", 3)]["unlearned"] and by_name[("east", 3)]["observed"] == 12
+    assert not by_name[("west", 0)]["unlearned"]
+    assert not by_name[("east", 5)]["unlearned"]
+    assert by_name[("west", 0)]["median_m"] == pytest.approx(0.1)
+    assert rows[-1]["zone"] == "west"  # worst median first
+
+
+def test_one_imprecise_observation_does_not_make_a_landmark_unlearned():
+    errors = [0.2] * 11 + [UNLEARNED_MEDIAN_M * 20]
+    rows = per_landmark([0] * 12, [2] * 12, errors, ["only"])
+    assert not rows[0]["unlearned"]
+    assert rows[0]["mean_m"] > UNLEARNED_MEDIAN_M

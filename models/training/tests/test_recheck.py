@@ -79,7 +79,9 @@ def test_the_report_sets_each_figure_beside_the_shipped_one(tmp_path):
                            "train": {"images": 5, "accuracy": 0.8, "confusion": [[4, 1], [0, 0]]}},
             "keypoints": {"test": {"pose": {"map50": 0.6},
                                    "keypoint_error": {"mean_error_m": 1.25, "on_another_landmark": 4,
-                                                      "mean_error_not_swapped_m": 0.31, "swap_radius_m": 0.5}},
+                                                      "mean_error_not_swapped_m": 0.31, "swap_radius_m": 0.5,
+                                                      "unlearned_landmarks": ["a #7"],
+                                                      "mean_error_learned_landmarks_m": 0.22}},
                           "changed": {"pose": {"map50": 0.4}}}},
     }
     write_report(result, {"zones": ["a", "b"], "lidar": {"name": "omni_12m"}}, tmp_path / "R.md")
@@ -91,6 +93,8 @@ def test_the_report_sets_each_figure_beside_the_shipped_one(tmp_path):
     assert "| mean error of observed keypoints | 2.780 m | 1.250 m | - | - | <= 0.15 m |" in text
     assert "| of them on another landmark (identity mistakes) | - | 4 | - | - |  |" in text
     assert "| mean error, identity mistakes apart | - | 0.310 m | - | - |  |" in text
+    assert "| landmarks not learned (median error over 1 m) | - | a #7 | - | - |  |" in text
+    assert "| mean error, the other landmarks | - | 0.220 m | - | - |  |" in text
     assert "swap radius (0.500 m)" in text
     assert "| **a** | 1 | 1 |" in text
     assert "Images: train 5, val 0, test 2, changed 1." in text

@@ -6,7 +6,7 @@ import numpy as np
 import onnxruntime as ort
 import pytest
 
-from krp_training import train_map
+from krp_training import train_keypoints, train_map
 
 
 def test_tiny_train_and_export(tmp_path, bin_dir):
@@ -44,6 +44,10 @@ def test_tiny_train_and_export(tmp_path, bin_dir):
     n_train = m["classifier"]["metrics"]["images"]["train"]
     assert m["keypoints"]["metrics"]["train_images"] == n_train
     assert f"on {n_train} of {n_train} training images" in report
+    # The keypoint loss's sigma is recorded, and every landmark's error is told apart.
+    assert m["training"]["keypoint_params"]["oks_sigma"] == train_keypoints.KeypointParams.oks_sigma
+    assert "per_landmark" in m["keypoints"]["metrics"]["test"]["keypoint_error"]
+    assert "Landmarks not learned" in report
 
     # The C++ runtime reads what Python wrote.
     res = subprocess.run([str(bin_dir / "krp-infer"), "--models", str(out), "--latency", "3"], capture_output=True,
@@ -73,6 +77,13 @@ def test_existing_output_survives_a_failed_run(tmp_path, bin_dir):
         pass
     assert (out / "keep.txt").read_text() == "previous models"
 
+
+def test_a_negative_keypoint_loss_sigma_is_refused_before_any_work(tmp_path, bin_dir, capsys):
+    with pytest.raises(SystemExit):
+        train_map.main(["--world", "office_two_zone", "--out", str(tmp_path / "m"), "--work-dir",
+                        str(tmp_path / "work"), "--keypoint-loss-sigma", "-1", "--bin-dir", str(bin_dir)])
+    assert "--keypoint-loss-sigma must be >= 0" in capsys.readouterr().err
+    assert not (tmp_path / "work").exists() and not (tmp_path / "m.partial").exists()
 
 
 def test_a_map_file_without_zones_is_zoned_and_trained(tmp_path, bin_dir):
