@@ -35,3 +35,29 @@ def test_zero_keeps_ultralytics_default(tmp_path):
 def test_a_negative_or_nan_sigma_is_refused(tmp_path, bad):
     with pytest.raises(ValueError, match="sigma"):
         with_loss_sigma(_data_yaml(tmp_path), tmp_path, bad)
+
+
+def _run(sigma, unlearned):
+    split = {"box": {"map50": 0.9}, "pose": {"map50": 0.8, "map50_95": 0.6},
+             "keypoint_error": {"mean_error_m": 2.5, "median_error_m": 0.4, "right_zone": 90, "images": 100,
+                                "unlearned_landmarks": unlearned}}
+    return {"oks_sigma": sigma, "seconds": 12.0, "test": split, "changed": split}
+
+
+def test_the_comparison_names_each_sigma_and_the_landmarks_it_left_unlearned():
+    from krp_training.compare_loss_sigma import markdown
+
+    text = markdown({"world": "w", "command": "python -m krp_training.compare_loss_sigma --world w",
+                     "dataset_command": "krp-dataset --world w", "train_images": 600, "epochs": 40, "seed": 1,
+                     "runs": [_run(0.0, ["a #7", "b #1"]), _run(0.25, [])]})
+    assert "| ultralytics' 1/K | test | 0.900 | 0.800 | 0.600 | 2.500 m | 0.400 m | 90 of 100 | 2: a #7, b #1 | 12 |" in text
+    assert "| 0.25 | changed |" in text and "| 0: none |" in text
+
+
+@pytest.mark.parametrize("sigmas", ["0,-1", "0,x"])
+def test_the_comparison_refuses_bad_sigmas(sigmas, capsys):
+    from krp_training.compare_loss_sigma import parse_args
+
+    with pytest.raises(SystemExit):
+        parse_args(["--world", "w", "--out", "o", "--sigmas", sigmas])
+    assert "--sigmas" in capsys.readouterr().err

@@ -1,0 +1,114 @@
+"""The keypoint model trained with several OKS sigmas of its loss, side by side on one dataset.
+
+Every run gets the same dataset (krp-dataset with krp-train-map's defaults), the same training
+images, seed and epochs; only `KeypointParams.oks_sigma` differs. Each exported model is measured
+as krp-train-map measures it: ultralytics' validator (with ultralytics' own sigma, whatever the
+training sigma) and the error of observed keypoints, per landmark. Writes loss_sigma.json and
+LOSS_SIGMA.md into --out.
+"""
+import argparse
+import json
+import shlex
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+from . import export, keypoint_error, train_keypoints
+from .augment import max_rotation_deg
+from .train_map import DEFAULT_BIN_DIR, KEYPOINT_TRAIN_IMAGES, REPO_ROOT
+
+EVAL_SPLITS = ("test", "changed")
+
+
+def _f(x, digits=3):
+    return "n/a" if x is None else f"{x:.{digits}f}"
+
+
+def _sigma_name(sigma: float) -> str:
+    return "ultralytics' 1/K" if sigma == 0 else f"{sigma:g}"
+
+
+def markdown(result: dict) -> str:
+    lines = [f"# Keypoint loss sigma: {result['world']}", "", f"Command: `{result['command']}`", "",
+             f"Dataset: `{result['dataset_command']}`; {result['train_images']} training images, "
+             f"{result['epochs']} epochs, seed {result['seed']} for every run. pose mAP is ultralytics' "
+             "(its own sigma for every run); errors are of keypoints labelled observed, on images whose top "
+             f"detection names the right zone; a landmark is not learned when its median error is over "
+             f"{keypoint_error.UNLEARNED_MEDIAN_M:g} m.", "",
+             "| training sigma | split | box mAP50 | pose mAP50 | pose mAP50-95 | mean kpt error | median | "
+             "right-zone images | landmarks not learned | train s |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in result["runs"]:
+        for s in EVAL_SPLITS:
+            m, e = r[s], r[s]["keypoint_error"]
+            names = ", ".join(e["unlearned_landmarks"]) or "none"
+            lines.append(f"| {_sigma_name(r['oks_sigma'])} | {s} | {_f(m['box']['map50'])} | {_f(m['pose']['map50'])} | "
+                         f"{_f(m['pose']['map50_95'])} | {_f(e['mean_error_m'])} m | {_f(e['median_error_m'])} m | "
+                         f"{e['right_zone']} of {e['images']} | {len(e['unlearned_landmarks'])}: {names} | "
+                         f"{r['seconds']:.0f} |")
+    return "\n".join(lines) + "\n"
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(prog="compare_loss_sigma", description=__doc__.splitlines()[0])
+    p.add_argument("--world", required=True)
+    p.add_argument("--out", required=True, type=Path, help="folder for loss_sigma.json and LOSS_SIGMA.md")
+    p.add_argument("--sigmas", default="0,0.25", help="comma-separated OKS sigmas (0 = ultralytics' 1/K)")
+    p.add_argument("--samples-per-zone", type=int, default=4000)
+    p.add_argument("--changed-per-zone", type=int, default=150)
+    p.add_argument("--keypoint-train-images", type=int, default=KEYPOINT_TRAIN_IMAGES)
+    p.add_argument("--epochs", type=int, default=40)
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--bin-dir", type=Path, default=DEFAULT_BIN_DIR)
+    args = p.parse_args(argv)
+    try:
+        args.sigmas = [float(s) for s in args.sigmas.split(",")]
+    except ValueError:
+        p.error(f"--sigmas: '{args.sigmas}' is not a comma-separated list of numbers")
+    if any(not s >= 0 for s in args.sigmas):
+        p.error(f"--sigmas must all be >= 0, not {args.sigmas}")
+    return args
+
+
+def main(argv=None) -> int:
+    args = parse_args(argv)
+    command = "python -m krp_training.compare_loss_sigma " + " ".join(
+        shlex.quote(a) for a in (argv if argv is not None else sys.argv[1:]))
+    with tempfile.TemporaryDirectory() as tmp:
+        dataset = Path(tmp) / "dataset"
+        ds_cmd = [str(args.bin_dir / "krp-dataset"), "--world", args.world, "--world-dir", str(REPO_ROOT / "sim_worlds"),
+                  "--out", str(dataset), "--samples-per-zone", str(args.samples_per_zone), "--changed-per-zone",
+                  str(args.changed_per_zone), "--seed", str(args.seed)]
+        subprocess.run(ds_cmd, check=True, stdout=subprocess.DEVNULL)
+        card = json.loads((dataset / "dataset_card.json").read_text())
+        img_px, res_m = int(card["submap"]["size_px"]), float(card["submap"]["resolution_m"])
+        k = int(card["landmarks"]["keypoints_per_zone"])
+        runs = []
+        for sigma in args.sigmas:
+            work = Path(tmp) / f"sigma_{sigma:g}"
+            work.mkdir()
+            data_yaml, n_train = train_keypoints.limit_training_images(dataset / "keypoints" / "data.yaml", work,
+                                                                       args.keypoint_train_images, args.seed)
+            params = train_keypoints.KeypointParams(epochs=args.epochs, seed=args.seed,
+                                                    rotation_deg=max_rotation_deg(card), oks_sigma=sigma)
+            trained = train_keypoints.train(data_yaml, work, params, img_px)
+            onnx = work / "keypoints.onnx"
+            export.export_keypoints(trained.weights, img_px, onnx, work)
+            run = {"oks_sigma": sigma, "seconds": trained.seconds, "params": trained.params}
+            for s in EVAL_SPLITS:
+                run[s] = train_keypoints.evaluate(onnx, dataset / "keypoints", s, img_px, work)
+                run[s]["keypoint_error"] = keypoint_error.mean_keypoint_error(onnx, dataset, s, img_px, res_m, k, work,
+                                                                              zone_names=card["zones"])
+            runs.append(run)
+    result = {"world": args.world, "command": command, "dataset_command": " ".join(["krp-dataset"] + ds_cmd[1:]),
+              "train_images": n_train, "epochs": args.epochs, "seed": args.seed, "runs": runs}
+    args.out.mkdir(parents=True, exist_ok=True)
+    (args.out / "loss_sigma.json").write_text(json.dumps(result, indent=1))
+    (args.out / "LOSS_SIGMA.md").write_text(markdown(result))
+    print(f"compare_loss_sigma: {args.out / 'LOSS_SIGMA.md'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
