@@ -19,7 +19,7 @@ import numpy as np
 import yaml
 from tqdm import tqdm
 
-from . import keypoint_error, manifest as manifest_io, train_keypoints
+from . import keypoint_error, manifest as manifest_io, train_keypoints, zone_border
 from .image_folders import read_split
 from .recheck_report import write_report
 
@@ -148,12 +148,14 @@ def classifier_scores(onnx_path: Path, m: dict, images: "ImageSet", label: str) 
         return {"images": 0, "accuracy": None, "confusion": confusion.tolist()}
     session = ort.InferenceSession(str(onnx_path), providers=["CPUExecutionProvider"])
     name = m["classifier"]["input"]["name"]
+    right = []
     for img, zone in tqdm(zip(images.images.numpy(), images.labels.tolist()), total=len(images),
                           desc=f"classifier {label}", unit="img"):
         probs = session.run(None, {name: manifest_io.classifier_input(m, img[0])})[0][0]
         confusion[zone, int(np.argmax(probs))] += 1
+        right.append(int(np.argmax(probs)) == zone)
     return {"images": int(confusion.sum()), "accuracy": float(np.trace(confusion) / confusion.sum()),
-            "confusion": confusion.tolist()}
+            "confusion": confusion.tolist(), "right": right}
 
 
 def measure(models: Path, m: dict, dataset_dir: Path, work: Path) -> dict:
@@ -165,7 +167,13 @@ def measure(models: Path, m: dict, dataset_dir: Path, work: Path) -> dict:
     out = {"classifier": {}, "keypoints": {}}
     # 'train' here is fresh poses in the blocks the models trained on: the seen-place contrast.
     for split in ("test", "changed", "train"):
-        out["classifier"][split] = classifier_scores(cls_onnx, m, read_split(dataset_dir, split, zones), split)
+        images = read_split(dataset_dir, split, zones)
+        scores = classifier_scores(cls_onnx, m, images, split)
+        right = scores.pop("right", [])
+        if split != "train" and len(images):
+            scores["by_border_distance"] = zone_border.split_by_band(dataset_dir, images.ids, images.labels.tolist(),
+                                                                     right)
+        out["classifier"][split] = scores
     for split in ("test", "changed"):
         scores = train_keypoints.evaluate(kp_onnx, dataset_dir / "keypoints", split, img_px, work)
         scores["keypoint_error"] = keypoint_error.mean_keypoint_error(

@@ -2,6 +2,7 @@
 from pathlib import Path
 
 from .keypoint_error import UNLEARNED_MEDIAN_M
+from .report import border_band_table
 
 # The targets of the learning pipeline (issue 3), printed beside the measurements.
 TARGET_TEST_ACCURACY = 0.99
@@ -42,6 +43,17 @@ def _classifier_table(result: dict) -> list:
     for name, old, new, target in rows:
         lines.append(f"| {name} | {_pct(old)} | {_pct(new['accuracy'])} | {new['images']} | {target} |")
     return lines
+
+
+def _border_section(result: dict) -> list:
+    """The fresh splits' accuracy by distance to another zone; nothing for a result measured before."""
+    by_split = {s: result["fresh"]["classifier"][s].get("by_border_distance")
+                for s in ("test", "changed")}
+    table = border_band_table(by_split)
+    if not table:
+        return []
+    return ["Fresh accuracy by how far the pose lies from another zone (`krp_training/zone_border.py`; a border "
+            "across open floor has nothing to mark it):", "", *table, ""]
 
 
 def _names(v) -> str:
@@ -125,6 +137,7 @@ def write_report(result: dict, m: dict, path: Path) -> None:
         "",
         *_classifier_table(result),
         "",
+        *_border_section(result),
         "Confusion matrix, fresh test split (rows: true zone, columns: predicted):",
         "",
         *_confusion(m["zones"], result["fresh"]["classifier"]["test"]["confusion"]),

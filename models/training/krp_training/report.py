@@ -27,6 +27,7 @@ def _classifier_section(m):
              "| split | images | accuracy |", "|---|---|---|"]
     for s in ("val", "test", "changed"):
         lines.append(f"| {s} | {c['images'][s]} | {_pct(c['accuracy'][s])} |")
+    lines += _border_bands(c.get("by_border_distance"))
     lines += ["", f"Best validation epoch {c['best_epoch']}; training took {c['train_seconds']:.0f} s.", "",
               "Confusion matrix, test split (rows: true zone, columns: predicted):", "",
               "| | " + " | ".join(zones) + " |", "|---" * (len(zones) + 1) + "|"]
@@ -35,6 +36,31 @@ def _classifier_section(m):
     lines += ["", "![classifier curves](figures/classifier_curves.png) ![confusion, test](figures/confusion_test.png)"
               " ![confusion, changed](figures/confusion_changed.png)", ""]
     return lines
+
+
+def border_band_table(by_split: dict) -> list:
+    """Accuracy per distance band to another zone, one column pair per split (zone_border.py)."""
+    splits = [s for s in ("test", "changed") if by_split.get(s)]
+    if not splits:
+        return []
+    lines = ["| distance to another zone | " + " | ".join(f"{s} images | {s} accuracy" for s in splits) + " |",
+             "|---" * (1 + 2 * len(splits)) + "|"]
+    for i, row in enumerate(by_split[splits[0]]):
+        cells = []
+        for s in splits:
+            r = by_split[s][i]
+            cells += [str(r["images"]), _pct(r["accuracy"])]
+        lines.append(f"| {row['band']} | " + " | ".join(cells) + " |")
+    return lines
+
+
+def _border_bands(by_split) -> list:
+    if not by_split:
+        return []
+    return ["", "Accuracy by how far the pose lies from another zone (`krp_training/zone_border.py`): a border across "
+            "open floor, such as a corridor split in the middle, has nothing on the floor to mark it, so mistakes "
+            "within a metre of it say little about the classifier; the relocalizer runs the keypoint model on its "
+            "top zones for them.", "", *border_band_table(by_split)]
 
 
 def _identity_mistakes(k) -> list:

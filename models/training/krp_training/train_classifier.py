@@ -110,14 +110,15 @@ def train(train_set: ImageSet, val_set: ImageSet, num_classes: int, params: Clas
 
 def evaluate(model: nn.Module, data: ImageSet, num_classes: int, device: str = "cpu"):
     """(accuracy or None for an empty split, as JSON has no NaN; confusion matrix with rows = true
-    zone, columns = predicted), from one pass over the split."""
+    zone, columns = predicted; per image, whether it was right), from one pass over the split."""
     m = torch.zeros(num_classes, num_classes, dtype=torch.int64)
     if not len(data):
-        return None, m.tolist()
+        return None, m.tolist(), []
     pred = predict(model, data.images, device).argmax(1)
     for t, p in zip(data.labels.tolist(), pred.tolist()):
         m[t, p] += 1
-    return (pred == data.labels).float().mean().item(), m.tolist()
+    right = pred == data.labels
+    return right.float().mean().item(), m.tolist(), right.tolist()
 
 
 def accuracy(model: nn.Module, data: ImageSet, device: str = "cpu"):

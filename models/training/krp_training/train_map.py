@@ -18,7 +18,7 @@ import torch
 import yaml
 
 from . import (classifier_models, export, keypoint_error, machine_speed, manifest, plots, report, train_classifier,
-               train_keypoints)
+               train_keypoints, zone_border)
 from .augment import AugmentParams, max_rotation_deg
 from .image_folders import SPLITS, read_split
 from .stage_timer import StageTimer, duration
@@ -179,6 +179,9 @@ def main(argv=None) -> int:
         "accuracy": {s: evaluated[s][0] for s in ("val", "test", "changed")},
         "confusion": {s: evaluated[s][1] for s in ("test", "changed")},
         "images": {s: len(sets[s]) for s in SPLITS},
+        "by_border_distance": {s: zone_border.split_by_band(dataset_dir, sets[s].ids, sets[s].labels.tolist(),
+                                                            evaluated[s][2]) if len(sets[s]) else []
+                               for s in ("test", "changed")},
     }
     plots.classifier_curves(cls.history, f"{name}: zone classifier ({args.classifier})",
                             partial / "figures" / "classifier_curves.png")

@@ -57,7 +57,10 @@ def test_the_shipped_office_models_on_a_few_fresh_samples(tmp_path, bin_dir):
         assert scores["images"] == sum(card["counts"][split].values()) > 0, split
         assert 0.0 <= scores["accuracy"] <= 1.0
         assert sum(map(sum, scores["confusion"])) == scores["images"]
+        assert "right" not in scores  # per-image outcomes are summed into bands, not written out
     for split in ("test", "changed"):
+        bands = result["fresh"]["classifier"][split]["by_border_distance"]
+        assert sum(b["images"] for b in bands) == result["fresh"]["classifier"][split]["images"]
         kp = result["fresh"]["keypoints"][split]
         assert 0.0 <= kp["pose"]["map50"] <= 1.0
         assert kp["keypoint_error"]["images"] == sum(card["counts"][split].values())
@@ -74,7 +77,8 @@ def test_the_report_sets_each_figure_beside_the_shipped_one(tmp_path):
         "shipped": {"classifier": {"accuracy": {"test": 0.94, "changed": 0.83}},
                     "keypoints": {"test": {"pose": {"map50": 0.817}, "keypoint_error": {"mean_error_m": 2.78}}}},
         "fresh": {
-            "classifier": {"test": {"images": 2, "accuracy": 0.5, "confusion": [[1, 1], [0, 0]]},
+            "classifier": {"test": {"images": 2, "accuracy": 0.5, "confusion": [[1, 1], [0, 0]],
+                                    "by_border_distance": [{"band": "0-1 m", "images": 2, "accuracy": 0.5}]},
                            "changed": {"images": 1, "accuracy": 1.0, "confusion": [[1, 0], [0, 0]]},
                            "train": {"images": 5, "accuracy": 0.8, "confusion": [[4, 1], [0, 0]]}},
             "keypoints": {"test": {"pose": {"map50": 0.6},
@@ -98,3 +102,5 @@ def test_the_report_sets_each_figure_beside_the_shipped_one(tmp_path):
     assert "swap radius (0.500 m)" in text
     assert "| **a** | 1 | 1 |" in text
     assert "Images: train 5, val 0, test 2, changed 1." in text
+    # Accuracy by distance to another zone, for the split that has it.
+    assert "| 0-1 m | 2 | 50.0 % |" in text

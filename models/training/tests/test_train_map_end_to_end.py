@@ -48,6 +48,10 @@ def test_tiny_train_and_export(tmp_path, bin_dir):
     assert m["training"]["keypoint_params"]["oks_sigma"] == train_keypoints.KeypointParams.oks_sigma
     assert "per_landmark" in m["keypoints"]["metrics"]["test"]["keypoint_error"]
     assert "Landmarks not learned" in report
+    # The classifier's test accuracy is told apart by distance to another zone; the bands count every image.
+    bands = m["classifier"]["metrics"]["by_border_distance"]["test"]
+    assert sum(b["images"] for b in bands) == m["classifier"]["metrics"]["images"]["test"]
+    assert "distance to another zone" in report
 
     # The C++ runtime reads what Python wrote.
     res = subprocess.run([str(bin_dir / "krp-infer"), "--models", str(out), "--latency", "3"], capture_output=True,
