@@ -149,9 +149,11 @@ TEST(Relocalizer, ZoneSearchAnswersWhenTheKeypointsGiveNothing) {
 // The keypoints of the office's look-alike wings sometimes align to the wrong wing, and
 // verification alone finds nothing wrong there. The cross-check searches the map for a place
 // that fits as well: it turns such answers right or "not localized", and makes no right answer
-// wrong. Of trial seeds 0-79, the first five below are those where the keypoints alone were
-// localized but wrong (gcc build) with the office models of their time; the others were right.
-// The retrained models (16,000 poses per zone) still get at least one of them wrong.
+// wrong. With the shipped office models (16,000 poses per zone), of trial seeds 0-119 the
+// keypoints alone were localized but wrong at 55, 68, 83 and 113 in the gcc build and at 13 in
+// the clang sanitizer build (borderline scans: floating point differs between the builds); the
+// other seeds below were right in both. With the cross-check, and with the fit floor alone, none
+// of the 120 was wrong in either build.
 TEST(Relocalizer, CrossCheckCatchesTheLookAlikeWing) {
   const auto world = readWorld(kWorld);
   const auto map = loadOccupancyMap(world.map_path);
@@ -170,7 +172,7 @@ TEST(Relocalizer, CrossCheckCatchesTheLookAlikeWing) {
     return r.ranking.localized && std::hypot(best.x - truth.x(), best.y - truth.y()) >= 0.5;
   };
   int wrong_without = 0, wrong_with = 0, checks = 0;
-  for (int seed : {8, 24, 48, 55, 76, 0, 1, 2, 3, 4}) {
+  for (int seed : {13, 55, 68, 83, 113, 0, 1, 2, 3, 4}) {
     const auto trial = generateTrial(*map.grid, world.lidar("omni_12m"), TrialParams{}, seed);
     const mrpt::poses::CPose2D truth(trial.truth[0]);
     Rng rng(seed);
@@ -185,8 +187,7 @@ TEST(Relocalizer, CrossCheckCatchesTheLookAlikeWing) {
     EXPECT_FALSE(wrong(floored.relocalize(*scan), truth)) << "seed " << seed;
   }
   EXPECT_GT(checks, 0);
-  // Five in the gcc build, two in the clang sanitizer build: these are borderline scans, and
-  // floating point differs between the two.
+  // Four in the gcc build, one in the clang sanitizer build (above).
   EXPECT_GE(wrong_without, 1) << "the scans were chosen because the keypoints alone get some wrong";
   EXPECT_EQ(wrong_with, 0);
 }
