@@ -152,8 +152,9 @@ def classifier_scores(onnx_path: Path, m: dict, images: "ImageSet", label: str) 
     for img, zone in tqdm(zip(images.images.numpy(), images.labels.tolist()), total=len(images),
                           desc=f"classifier {label}", unit="img"):
         probs = session.run(None, {name: manifest_io.classifier_input(m, img[0])})[0][0]
-        confusion[zone, int(np.argmax(probs))] += 1
-        right.append(int(np.argmax(probs)) == zone)
+        predicted = int(np.argmax(probs))
+        confusion[zone, predicted] += 1
+        right.append(predicted == zone)
     return {"images": int(confusion.sum()), "accuracy": float(np.trace(confusion) / confusion.sum()),
             "confusion": confusion.tolist(), "right": right}
 
