@@ -61,6 +61,8 @@ static int run(int argc, char** argv) {
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"top-turns", "N", "seeded, wall-aligned models: submap turns the keypoint model runs on (the "
                  "classifier's surest)", std::to_string(krp::RelocalizerParams{}.top_turns)},
+                {"keypoints-every-turn", "", "seeded: run the keypoint model on every one of the top turns, even "
+                 "after one gave a credible answer (the relocalizer before it stopped there)", ""},
                 {"search-zones", "N", "seeded: when the keypoints give no credible pose, the correlative matcher "
                  "searches this many of the classifier's most likely zones (0 = no zone search)", "1"},
                 {"cross-check-places", "N", "seeded: other places the look-alike cross-check proposes per round "
@@ -149,6 +151,7 @@ static int run(int argc, char** argv) {
   const auto top_turns = args.integer("top-turns");
   if (top_turns < 1 || top_turns > 4) throw krp::InputError("--top-turns", "must be 1 to 4");
   cfg.method_settings.relocalizer.top_turns = static_cast<int>(top_turns);
+  cfg.method_settings.relocalizer.stop_turns_once_localized = !args.flag("keypoints-every-turn");
   const auto search_zones = args.integer("search-zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
   cfg.method_settings.relocalizer.zone_search.zones = static_cast<int>(search_zones);

@@ -160,8 +160,10 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
   r.zone_probabilities = turns.front().probabilities;
   r.times.classifier_ms = msSince(t);
 
-  std::vector<PoseHypothesis> candidates;
+  // Each turn's poses are scored once, as they come; the ranking is over all turns tried.
+  std::vector<PoseHypothesis> scored;
   for (const auto& turn : turns) {
+    if (params_.stop_turns_once_localized && r.ranking.localized) break;
     t = Clock::now();
     const cv::Mat sdt = renderSdtImage(turn.submap.grid, SdtImageParams{manifest_.sdt_clip_m});
     r.times.submap_ms += msSince(t);
@@ -178,16 +180,16 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
     }
     r.detections += static_cast<int>(used.size());
     auto found = keypointHypotheses(used, turn.submap.grid, manifest_.landmarks, turn.probabilities, params_.keypoints);
-    candidates.insert(candidates.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
+    r.candidates += static_cast<int>(found.size());
     r.times.alignment_ms += msSince(t);
-  }
-  r.candidates = static_cast<int>(candidates.size());
 
-  t = Clock::now();
-  // Scored once; when the zone search runs, its poses are ranked beside these.
-  auto scored = verifier_.refineAndScore(scan, std::move(candidates));
-  r.ranking = verifier_.rank(scored);
-  r.times.verification_ms = msSince(t);
+    t = Clock::now();
+    auto verified = verifier_.refineAndScore(scan, std::move(found));
+    scored.insert(scored.end(), std::make_move_iterator(verified.begin()), std::make_move_iterator(verified.end()));
+    r.ranking = verifier_.rank(scored);
+    r.times.verification_ms += msSince(t);
+    ++r.keypoint_turns;
+  }
 
   if (!r.ranking.localized && hasZoneSearch()) {
     t = Clock::now();

@@ -70,6 +70,11 @@ struct RelocalizerParams {
   /// on this many of them, those whose most likely zone the classifier is surest of. The turn
   /// the classifier prefers is not always the right one, and verification decides.
   int top_turns = 2;
+  /// The turns are tried in that order, and the next one only while no turn so far gave a
+  /// credible ("localized") answer: the keypoint model is the costliest stage, and a second
+  /// turn rarely changes a credible answer, which the cross-check still checks for look-alikes.
+  /// false: every one of the top turns runs, whatever the first gave.
+  bool stop_turns_once_localized = true;
   int max_detections_per_zone = 3;  ///< highest-scoring detections kept per zone
   /// Lower than ultralytics' prediction default (0.25): a weak detection only proposes a pose,
   /// which verification then accepts or rejects.
@@ -100,6 +105,7 @@ struct RelocalizationResult {
   Ranking ranking;                       ///< the hypotheses, best first, and whether localized
   std::vector<float> zone_probabilities;  ///< manifest zone order, of the turn the classifier was surest of
   int turns = 1;                          ///< submap turns the classifier saw (4 for wall-aligned models)
+  int keypoint_turns = 0;                 ///< turns the keypoint model ran on
   int detections = 0;                     ///< keypoint-model detections used
   int candidates = 0;                     ///< poses proposed by the alignment
   bool zone_search_used = false;          ///< the keypoints gave no credible pose and the zone search ran

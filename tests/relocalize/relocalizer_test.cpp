@@ -146,6 +146,46 @@ TEST(Relocalizer, ZoneSearchAnswersWhenTheKeypointsGiveNothing) {
   EXPECT_GE(right, 1) << "the search of the right zone should find the pose";
 }
 
+// The keypoint model runs on the next submap turn only while no turn so far gave a credible
+// answer. Without the cross-check and the zone search (which run after the turns), one turn
+// means that turn localized, and a scan that needed both turns gets the very answer of the
+// relocalizer that always runs both. Seeds 0-5 include scans of either kind.
+TEST(Relocalizer, RunsTheNextTurnOnlyWhileNotLocalized) {
+  const auto world = readWorld(kWorld);
+  const auto map = loadOccupancyMap(world.map_path);
+  RelocalizerParams stopping;
+  stopping.cross_check.enabled = false;
+  RelocalizerParams every_turn = stopping;
+  every_turn.stop_turns_once_localized = false;
+  const Relocalizer lazy(kModels, *map.grid, stopping), eager(kModels, *map.grid, every_turn);
+  int one_turn = 0, two_turns = 0;
+  for (int seed = 0; seed < 6; ++seed) {
+    const auto trial = generateTrial(*map.grid, world.lidar("omni_12m"), TrialParams{}, seed);
+    Rng rng(seed);
+    const auto scan =
+        ScanSimulator(lidarProfileByName("omni_12m")).simulate(*map.grid, mrpt::poses::CPose2D(trial.truth[0]), rng);
+    const auto a = lazy.relocalize(*scan), b = eager.relocalize(*scan);
+    ASSERT_EQ(b.keypoint_turns, stopping.top_turns) << "seed " << seed;
+    if (a.keypoint_turns == 1) {
+      ++one_turn;
+      EXPECT_TRUE(a.ranking.localized) << "seed " << seed;
+      continue;
+    }
+    ++two_turns;
+    ASSERT_EQ(a.keypoint_turns, 2);
+    EXPECT_EQ(a.candidates, b.candidates) << "seed " << seed;
+    EXPECT_EQ(a.ranking.localized, b.ranking.localized) << "seed " << seed;
+    ASSERT_EQ(a.ranking.hypotheses.size(), b.ranking.hypotheses.size()) << "seed " << seed;
+    if (a.ranking.hypotheses.empty()) continue;
+    const auto &pa = a.ranking.hypotheses.front().pose, &pb = b.ranking.hypotheses.front().pose;
+    EXPECT_DOUBLE_EQ(pa.x, pb.x);
+    EXPECT_DOUBLE_EQ(pa.y, pb.y);
+    EXPECT_DOUBLE_EQ(pa.phi, pb.phi);
+  }
+  EXPECT_GT(one_turn, 0);
+  EXPECT_GT(two_turns, 0);
+}
+
 // The keypoints of the office's look-alike wings sometimes align to the wrong wing, and
 // verification alone finds nothing wrong there. The cross-check searches the map for a place
 // that fits as well: it turns such answers right or "not localized", and makes no right answer
