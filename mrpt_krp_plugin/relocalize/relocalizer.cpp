@@ -162,8 +162,9 @@ RelocalizationResult Relocalizer::relocalize(const mrpt::obs::CObservation2DRang
 
   // Each turn's poses are scored once, as they come; the ranking is over all turns tried.
   std::vector<PoseHypothesis> scored;
+  const bool stop_once_localized = params_.stop_turns_once_localized && params_.cross_check.enabled;
   for (const auto& turn : turns) {
-    if (params_.stop_turns_once_localized && r.ranking.localized) break;
+    if (stop_once_localized && r.ranking.localized) break;
     t = Clock::now();
     const cv::Mat sdt = renderSdtImage(turn.submap.grid, SdtImageParams{manifest_.sdt_clip_m});
     r.times.submap_ms += msSince(t);

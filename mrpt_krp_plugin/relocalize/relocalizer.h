@@ -70,10 +70,12 @@ struct RelocalizerParams {
   /// on this many of them, those whose most likely zone the classifier is surest of. The turn
   /// the classifier prefers is not always the right one, and verification decides.
   int top_turns = 2;
-  /// The turns are tried in that order, and the next one only while no turn so far gave a
-  /// credible ("localized") answer: the keypoint model is the costliest stage, and a second
-  /// turn rarely changes a credible answer, which the cross-check still checks for look-alikes.
-  /// false: every one of the top turns runs, whatever the first gave.
+  /// With the cross-check on, the turns are tried in that order, and the next one only while no
+  /// turn so far gave a credible ("localized") answer: the keypoint model is the costliest stage,
+  /// and the cross-check then searches the map for a look-alike of that answer. Without the
+  /// cross-check every top turn runs, since another turn's poses are the only check a wrong
+  /// credible answer gets (stopping there made the keypoints-only relocalizer localized but
+  /// wrong on 2 % of the office's first scans instead of 0 %). false: every top turn runs.
   bool stop_turns_once_localized = true;
   int max_detections_per_zone = 3;  ///< highest-scoring detections kept per zone
   /// Lower than ultralytics' prediction default (0.25): a weak detection only proposes a pose,

@@ -146,18 +146,21 @@ TEST(Relocalizer, ZoneSearchAnswersWhenTheKeypointsGiveNothing) {
   EXPECT_GE(right, 1) << "the search of the right zone should find the pose";
 }
 
-// The keypoint model runs on the next submap turn only while no turn so far gave a credible
-// answer. Without the cross-check and the zone search (which run after the turns), one turn
-// means that turn localized, and a scan that needed both turns gets the very answer of the
-// relocalizer that always runs both. Seeds 0-5 include scans of either kind.
+// With the cross-check on, the keypoint model runs on the next submap turn only while no turn
+// so far gave a credible answer, and the cross-check then checks the answer. A scan that needed
+// both turns gets the very answer of the relocalizer that always runs both. Without the
+// cross-check every turn runs. Seeds 0-5 include scans of either kind.
 TEST(Relocalizer, RunsTheNextTurnOnlyWhileNotLocalized) {
   const auto world = readWorld(kWorld);
   const auto map = loadOccupancyMap(world.map_path);
+  const auto zones = readZonesYaml(world.zones_path);
   RelocalizerParams stopping;
-  stopping.cross_check.enabled = false;
   RelocalizerParams every_turn = stopping;
   every_turn.stop_turns_once_localized = false;
-  const Relocalizer lazy(kModels, *map.grid, stopping), eager(kModels, *map.grid, every_turn);
+  RelocalizerParams unchecked = stopping;
+  unchecked.cross_check.enabled = false;
+  const Relocalizer lazy(kModels, *map.grid, stopping, zones), eager(kModels, *map.grid, every_turn, zones),
+      without_check(kModels, *map.grid, unchecked, zones);
   int one_turn = 0, two_turns = 0;
   for (int seed = 0; seed < 6; ++seed) {
     const auto trial = generateTrial(*map.grid, world.lidar("omni_12m"), TrialParams{}, seed);
@@ -166,9 +169,12 @@ TEST(Relocalizer, RunsTheNextTurnOnlyWhileNotLocalized) {
         ScanSimulator(lidarProfileByName("omni_12m")).simulate(*map.grid, mrpt::poses::CPose2D(trial.truth[0]), rng);
     const auto a = lazy.relocalize(*scan), b = eager.relocalize(*scan);
     ASSERT_EQ(b.keypoint_turns, stopping.top_turns) << "seed " << seed;
+    EXPECT_EQ(without_check.relocalize(*scan).keypoint_turns, stopping.top_turns) << "seed " << seed;
     if (a.keypoint_turns == 1) {
       ++one_turn;
-      EXPECT_TRUE(a.ranking.localized) << "seed " << seed;
+      // Localized after the first turn: no zone search, and the answer was cross-checked.
+      EXPECT_FALSE(a.zone_search_used) << "seed " << seed;
+      EXPECT_TRUE(a.cross_check_used) << "seed " << seed;
       continue;
     }
     ++two_turns;
