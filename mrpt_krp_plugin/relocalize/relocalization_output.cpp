@@ -70,7 +70,8 @@ std::string relocalizationText(const RelocalizationResult& r, const std::vector<
   o << std::fixed << std::setprecision(3);
   o << (r.ranking.localized ? "localized" : "NOT localized: " + r.ranking.reason) << "\nzones:";
   for (size_t z = 0; z < r.zone_probabilities.size(); ++z) o << " " << zoneName(int(z), zone_names) << " " << r.zone_probabilities[z];
-  o << "\nkeypoint model on " << r.keypoint_turns << " of " << r.turns << " submap turn(s); " << r.detections << " detection(s), " << r.candidates << " aligned candidate(s), " << r.ranking.hypotheses.size()
+  o << "\nkeypoint model on " << r.keypoint_turns << " of " << r.turns << " submap turn(s); " << r.detections
+    << " detection(s), " << r.candidates << " aligned candidate(s), " << r.ranking.hypotheses.size()
     << " hypothesis(es) after verification, " << r.times.total_ms << " ms\n";
   if (r.zone_search_used)
     o << "zone search (the keypoints gave no credible pose): " << r.zone_search_candidates << " pose(s) from the matcher, "
