@@ -4,6 +4,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -39,7 +40,8 @@ constexpr char kSection[] = "localize";
 const std::set<std::string> kIniKeys = {"map", "rawlog", "bag", "carmen", "carmen_fov_deg", "truth_from_log", "scan_topic",
                                         "odom_frame", "base_frame", "method", "ground_truth", "out_dir", "seed",
                                         "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min",
-                                        "models", "zones", "calibration", "min_localized_fit", "single_scan", "single_scan_stride", "top_zones", "search_zones",
+                                        "models", "zones", "calibration", "min_localized_fit", "single_scan", "single_scan_stride", "top_zones", "top_turns",
+                                        "keypoints_every_turn", "search_zones",
                                         "seeded_uniform_fraction"};
 
 std::string flagName(std::string key) {
@@ -218,7 +220,13 @@ static int run(int argc, char** argv) {
                  "with counts against the ground truth (-1 = run the filter). Uses --models, or the global matcher "
                  "with --method global-matcher", "-1"},
                 {"single-scan-stride", "N", "--single-scan all: every N-th scan", "1"},
-                {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
+                {"top-zones", "N", "seeded: zones whose keypoints are aligned",
+                 std::to_string(krp::RelocalizerParams{}.top_zones)},
+                {"top-turns", "N", "seeded, wall-aligned models: submap turns the keypoint model runs on (1 to 4, the "
+                 "classifier's surest first)", std::to_string(krp::RelocalizerParams{}.top_turns)},
+                {"keypoints-every-turn", "0|1", "seeded: 1 runs the keypoint model on every one of --top-turns; 0 "
+                 "runs the next turn only while no turn gave a credible answer (with the cross-check)",
+                 krp::RelocalizerParams{}.stop_turns_once_localized ? "0" : "1"},
                 {"search-zones", "N", "seeded, with --zones: the classifier's most likely zones searched when the "
                  "keypoints give no credible pose (0 = no zone search)", "1"},
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
@@ -244,6 +252,13 @@ static int run(int argc, char** argv) {
   ms.amcl.max_particles = static_cast<size_t>(toNumber(s, "kld_max"));
   ms.amcl.min_particles = static_cast<size_t>(toNumber(s, "kld_min"));
   ms.relocalizer.top_zones = static_cast<int>(toNumber(s, "top_zones"));
+  const auto top_turns = toNumber(s, "top_turns");
+  if (top_turns < 1 || top_turns > 4 || top_turns != std::floor(top_turns))
+    throw krp::InputError("--top-turns", "must be a whole number from 1 to 4");
+  ms.relocalizer.top_turns = static_cast<int>(top_turns);
+  const auto every_turn = toNumber(s, "keypoints_every_turn");
+  if (every_turn != 0 && every_turn != 1) throw krp::InputError("--keypoints-every-turn", "must be 0 or 1");
+  ms.relocalizer.stop_turns_once_localized = every_turn == 0;
   const auto search_zones = toNumber(s, "search_zones");
   if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
   ms.relocalizer.zone_search.zones = static_cast<int>(search_zones);

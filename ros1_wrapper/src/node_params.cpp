@@ -21,6 +21,8 @@ constexpr int kMaxSearchNodes = 1000000000;
 /// The most look_alike_rival_refinements accepted: ten halvings take 5 cm to 0.05 mm, far below
 /// the map's cells, and each costs another 27 scan evaluations per side and scan.
 constexpr int kMaxRivalRefinements = 10;
+/// A wall-aligned submap has four turns.
+constexpr int kMaxSubmapTurns = 4;
 // Each stored scan is replayed for every new look-alike: beyond this the replay costs more than a
 // second's worth of updates.
 constexpr int kMaxHistoryUpdates = 50;
@@ -83,6 +85,8 @@ const std::map<std::string, Reader>& readers() {
       {"calibration_file", string(&NodeParams::calibration_file)},
       {"min_localized_fit_fraction", number(&NodeParams::min_localized_fit_fraction, 0.0, 1.0)},
       {"cross_check", boolean(&NodeParams::cross_check)},
+      {"top_turns", integer(&NodeParams::top_turns, 1, kMaxSubmapTurns)},
+      {"stop_turns_once_localized", boolean(&NodeParams::stop_turns_once_localized)},
       {"relocalize_on_startup", boolean(&NodeParams::relocalize_on_startup)},
       {"relocalize_on_kidnap", boolean(&NodeParams::relocalize_on_kidnap)},
       {"publish_when_not_localized", boolean(&NodeParams::publish_when_not_localized)},
@@ -148,6 +152,8 @@ HypothesisSourceParams NodeParams::hypothesisSource() const {
   h.models_dir = models_dir;
   h.zones_file = zones_file;
   h.learned.cross_check.enabled = cross_check;
+  h.learned.top_turns = top_turns;
+  h.learned.stop_turns_once_localized = stop_turns_once_localized;
   useMinLocalizedFitFraction(min_localized_fit_fraction, h.learned, h.matcher);
   if (!calibration_file.empty()) useConfidenceCalibration(readConfidenceCalibration(calibration_file), h.learned, h.matcher);
   return h;

@@ -33,6 +33,12 @@ struct NodeParams {
   /// localized" (HypothesisRankingParams::min_localized_fit_fraction; 0 = off) [0..1]
   double min_localized_fit_fraction = HypothesisRankingParams{}.min_localized_fit_fraction;
   bool cross_check = true;                 ///< `learned`: check the best answer for look-alike places (CrossCheckParams)
+  /// `learned`, wall-aligned models: submap turns the keypoint model runs on, the classifier's
+  /// surest first (RelocalizerParams::top_turns)
+  int top_turns = RelocalizerParams{}.top_turns;
+  /// `learned`: with the cross-check, the next turn runs only while no turn so far gave a
+  /// credible answer (RelocalizerParams::stop_turns_once_localized)
+  bool stop_turns_once_localized = RelocalizerParams{}.stop_turns_once_localized;
   bool relocalize_on_startup = true;       ///< relocalize from the first scan
   bool relocalize_on_kidnap = false;       ///< relocalize when the tracked pose stops fitting the scans
   bool publish_when_not_localized = false;  ///< publish `initialpose` even when the relocalizer is unsure
