@@ -13,6 +13,12 @@ namespace krp::apps {
 CliArgs::CliArgs(std::string program, std::string summary, std::vector<Option> options)
     : program_(std::move(program)), summary_(std::move(summary)), options_(std::move(options)) {}
 
+std::vector<std::string> CliArgs::optionNames() const {
+  std::vector<std::string> names;
+  for (const auto& o : options_) names.push_back(o.name);
+  return names;
+}
+
 const CliArgs::Option& CliArgs::option(const std::string& name) const {
   for (const auto& o : options_)
     if (o.name == name) return o;

@@ -31,6 +31,8 @@ class CliArgs {
   std::vector<std::string> list(const std::string& name) const;  ///< comma-separated
   std::vector<long long> integerList(const std::string& name) const;  ///< comma-separated integers
   std::string usage() const;
+  /// The declared options' names, in declaration order.
+  std::vector<std::string> optionNames() const;
   std::string commandLine() const { return command_line_; }
 
  private:

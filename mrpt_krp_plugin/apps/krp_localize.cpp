@@ -36,23 +36,28 @@ using krp::apps::CliArgs;
 namespace {
 constexpr char kSection[] = "localize";
 
-// The INI's [localize] keys; each may also be given as a flag of the same name with '-'.
-const std::set<std::string> kIniKeys = {"map", "rawlog", "bag", "carmen", "carmen_fov_deg", "truth_from_log", "scan_topic",
-                                        "odom_frame", "base_frame", "method", "ground_truth", "out_dir", "seed",
-                                        "uniform_particles", "uniform_particles_per_m2", "kld_max", "kld_min",
-                                        "models", "zones", "calibration", "min_localized_fit", "single_scan", "single_scan_stride", "top_zones", "top_turns",
-                                        "keypoints_every_turn", "search_zones",
-                                        "seeded_uniform_fraction"};
-
+// The flag that gives an INI key on the command line: the same name with '-' for '_'.
 std::string flagName(std::string key) {
   for (auto& c : key) if (c == '_') c = '-';
   return key;
 }
 
+// The [localize] keys: every flag but --ini, with '_' for '-', so a new flag is an INI key too.
+std::set<std::string> iniKeys(const CliArgs& args) {
+  std::set<std::string> keys;
+  for (auto name : args.optionNames()) {
+    if (name == "ini") continue;
+    for (auto& c : name) if (c == '-') c = '_';
+    keys.insert(name);
+  }
+  return keys;
+}
+
 // Settings from the INI, overridden by flags given on the command line.
 std::map<std::string, std::string> mergeSettings(const CliArgs& args) {
+  const auto ini_keys = iniKeys(args);
   std::map<std::string, std::string> s;
-  for (const auto& k : kIniKeys) s[k] = args.get(flagName(k));
+  for (const auto& k : ini_keys) s[k] = args.get(flagName(k));
   if (!args.has("ini")) return s;
   const std::string ini = args.get("ini");
   if (!fs::exists(ini)) throw krp::InputError(ini, "INI file does not exist");
@@ -64,7 +69,7 @@ std::map<std::string, std::string> mergeSettings(const CliArgs& args) {
   std::vector<std::string> keys;
   cfg.getAllKeys(kSection, keys);
   for (const auto& k : keys) {
-    if (!kIniKeys.count(k)) throw krp::InputError(ini, "unknown key '" + k + "' in [localize]");
+    if (!ini_keys.count(k)) throw krp::InputError(ini, "unknown key '" + k + "' in [localize]");
     if (!args.has(flagName(k))) s[k] = cfg.read_string(kSection, k, "");
   }
   // Relative paths in the INI are relative to the INI's folder.
