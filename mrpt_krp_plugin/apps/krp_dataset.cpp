@@ -8,6 +8,7 @@
 #include "mrpt_krp_plugin/dataset/dataset_generator.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
+#include "mrpt_krp_plugin/sim/lidar_profile_file.h"
 #include "mrpt_krp_plugin/sim/world.h"
 #include "mrpt_krp_plugin/zones/auto_zoning.h"
 #include "mrpt_krp_plugin/zones/landmarks_yaml.h"
@@ -30,7 +31,9 @@ static int run(int argc, char** argv) {
                 {"map", "FILE", "a map instead of a world (.yaml, .gridmap[.gz], .bt/.ot), default clutter", ""},
                 {"zones", "FILE", "zones.yaml for --map (default: automatic zoning)", ""},
                 {"target-area", "M2", "automatic zoning for --map: target zone area", "80"},
-                {"lidar", "NAME", "lidar profile (default: the world's default; omni_12m for --map)", ""},
+                {"lidar", "NAME|FILE", "lidar profile: a built-in name (lds01, omni_12m, safety_270) or your scanner's "
+                 "NAME.yaml (fov_deg, beams, max_range_m, ...; see sim/lidar_profile_file.h) (default: the world's "
+                 "default; omni_12m for --map)", ""},
                 {"out", "DIR", "dataset folder (must not exist)", "out/dataset"},
                 {"samples-per-zone", "N", "train+val+test poses per zone", "400"},
                 {"changed-per-zone", "N", "changed-environment poses per zone", "60"},
@@ -83,7 +86,8 @@ static int run(int argc, char** argv) {
   }
   in.clutter = world.clutter;
   const std::string lidar_name = args.has("lidar") ? args.get("lidar") : world.default_lidar_profile;
-  in.lidar = args.has("map") ? krp::lidarProfileByName(lidar_name) : world.lidar(lidar_name);
+  in.lidar = args.has("map") ? krp::lidarProfile(lidar_name) : world.lidar(lidar_name);
+  in.lidar_from_file = krp::isLidarProfileFile(lidar_name);
 
   krp::DatasetParams p;
   p.samples_per_zone = static_cast<int>(args.integer("samples-per-zone"));

@@ -17,7 +17,9 @@ std::string datasetCardJson(const DatasetCard& card, const DatasetParams& p, con
                 {"beams", in.lidar.beams},
                 {"max_range_m", in.lidar.max_range_m},
                 {"range_noise_std_m", in.lidar.range_noise_std_m},
-                {"dropout_probability", in.lidar.dropout_probability}};
+                {"dropout_probability", in.lidar.dropout_probability},
+                {"mount_x_m", in.lidar.mount_x_m},
+                {"from_file", in.lidar_from_file}};
   j["zones"] = card.zones;
   j["seed"] = p.seed;
   j["samples_per_zone"] = p.samples_per_zone;
@@ -63,6 +65,9 @@ std::string datasetCardMarkdown(const DatasetCard& card, const DatasetParams& p,
     << p.split.train_fraction << " / " << p.split.val_fraction << " / "
     << 1.0 - p.split.train_fraction - p.split.val_fraction
     << " (train / val / test); `changed` is drawn separately with heavier clutter and moved furniture.\n\n"
+    << "Lidar `" << in.lidar.name << "` (" << (in.lidar_from_file ? "the user's profile file" : "built-in") << ", `lidar.yaml`): "
+    << in.lidar.fov_rad * 180.0 / M_PI << " deg, " << in.lidar.beams << " beams, " << in.lidar.max_range_m
+    << " m, range noise " << in.lidar.range_noise_std_m << " m, dropout " << in.lidar.dropout_probability << ".\n\n"
     << "| zone |";
   for (const char* s : kSplits) o << " " << s << " |";
   o << "\n|---|";

@@ -10,6 +10,7 @@
 #include "mrpt_krp_plugin/common/png_file.h"
 #include "mrpt_krp_plugin/common/progress_bar.h"
 #include "mrpt_krp_plugin/dataset/dataset_card.h"
+#include "mrpt_krp_plugin/sim/lidar_profile_file.h"
 #include "mrpt_krp_plugin/dataset/dataset_preview.h"
 #include "mrpt_krp_plugin/dataset/zone_pose_sampler.h"
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
@@ -135,6 +136,7 @@ DatasetCard generateDataset(const DatasetInputs& in, const DatasetParams& p, con
   preview.write((partial / "preview.png").string());
   writeZonesYaml(in.zones, (partial / "zones.yaml").string());
   writeLandmarksYaml(in.landmarks, in.landmark_params, (partial / "landmarks.yaml").string());
+  writeLidarProfileFile(in.lidar, (partial / "lidar.yaml").string());
   writeFileAtomically((partial / "keypoints" / "data.yaml").string(), ultralyticsDataYaml(fs::path(out_dir) / "keypoints", in));
   writeFileAtomically((partial / "dataset_card.json").string(), datasetCardJson(card, p, in));
   writeFileAtomically((partial / "DATASET_CARD.md").string(), datasetCardMarkdown(card, p, in));

@@ -52,12 +52,16 @@ struct DatasetInputs {
   LandmarkParams landmark_params;
   ClutterParams clutter;
   LidarProfile lidar;
+  /// The lidar came from the user's profile file, not a built-in name: models trained on the data
+  /// need that file (written as lidar.yaml) to render fresh submaps of it.
+  bool lidar_from_file = false;
 };
 
 /// Writes the dataset under `out_dir` (built in `out_dir.partial`, renamed when complete):
 ///   classifier/{train,val,test,changed}/<zone>/<id>.png     occupancy images
 ///   keypoints/images/{split}/<id>.png, keypoints/labels/{split}/<id>.txt   SDT images + YOLO-pose labels
-///   keypoints/data.yaml, samples.csv, zones.yaml, landmarks.yaml, dataset_card.json, DATASET_CARD.md,
+///   keypoints/data.yaml, samples.csv, zones.yaml, landmarks.yaml, lidar.yaml (the simulated lidar's
+///   profile), dataset_card.json, DATASET_CARD.md,
 ///   preview.png (a contact sheet of samples with their keypoints)
 /// Progress goes to `progress`. Throws InputError for unusable inputs; an existing `out_dir`
 /// is refused rather than overwritten.

@@ -11,6 +11,7 @@
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/yaml_file.h"
+#include "mrpt_krp_plugin/sim/lidar_profile_file.h"
 
 namespace fs = std::filesystem;
 
@@ -32,10 +33,33 @@ double number(const YAML::Node& n, const std::string& key, const std::string& fi
 
 }  // namespace
 
+namespace {
+/// The same profile: the same name, or the same file however its path is written.
+bool sameProfile(const std::string& a, const std::string& b) {
+  if (a == b) return true;
+  if (!isLidarProfileFile(a) || !isLidarProfileFile(b)) return false;
+  std::error_code ea, eb;
+  const auto ca = fs::weakly_canonical(a, ea), cb = fs::weakly_canonical(b, eb);
+  return !ea && !eb && ca == cb;
+}
+
+/// A profile file named relative to the world file is found beside it, as the map is.
+std::string besideWorld(const std::string& profile, const fs::path& dir) {
+  return isLidarProfileFile(profile) && fs::path(profile).is_relative() ? (dir / profile).string() : profile;
+}
+
+/// How writeWorld names a profile: a file relative to the world's folder, as it names the map.
+std::string relativeToWorld(const std::string& profile, const fs::path& dir) {
+  return isLidarProfileFile(profile) ? fs::relative(profile, dir).string() : profile;
+}
+}  // namespace
+
 LidarProfile World::lidar(const std::string& profile_name) const {
-  if (std::find(lidar_profiles.begin(), lidar_profiles.end(), profile_name) == lidar_profiles.end())
+  const auto listed = std::find_if(lidar_profiles.begin(), lidar_profiles.end(),
+                                   [&](const std::string& p) { return sameProfile(p, profile_name); });
+  if (listed == lidar_profiles.end())
     throw InputError("world '" + name + "'", "lidar profile '" + profile_name + "' is not listed for this world");
-  LidarProfile p = lidarProfileByName(profile_name);
+  LidarProfile p = lidarProfile(*listed);
   if (range_noise_std_m >= 0) p.range_noise_std_m = range_noise_std_m;
   if (dropout_probability >= 0) p.dropout_probability = dropout_probability;
   return p;
@@ -61,9 +85,11 @@ World interpretWorld(const YAML::Node& root, const std::string& path) {
     throw InputError(path, std::string("bad value: ") + e.what());
   }
   if (w.lidar_profiles.empty()) throw InputError(path, "'lidar_profiles' is empty");
-  for (const auto& p : w.lidar_profiles) lidarProfileByName(p);  // throws for an unknown name
-  w.default_lidar_profile = root["default_lidar_profile"] ? root["default_lidar_profile"].as<std::string>()
-                                                          : w.lidar_profiles.front();
+  for (auto& p : w.lidar_profiles) p = besideWorld(p, dir);
+  for (const auto& p : w.lidar_profiles) lidarProfile(p);  // throws for an unknown name or a bad file
+  w.default_lidar_profile = root["default_lidar_profile"]
+                                ? besideWorld(root["default_lidar_profile"].as<std::string>(), dir)
+                                : w.lidar_profiles.front();
   if (std::find(w.lidar_profiles.begin(), w.lidar_profiles.end(), w.default_lidar_profile) == w.lidar_profiles.end())
     throw InputError(path, "default_lidar_profile '" + w.default_lidar_profile + "' is not in lidar_profiles");
   if (const auto o = root["lidar_overrides"]) {
@@ -107,8 +133,8 @@ void writeWorld(const World& w, const std::string& path) {
   o << "# Simulated world for mrpt_krp_plugin (written by krp-make-worlds; see the README, section 'Sim worlds')\n"
     << "name: " << w.name << "\nmap: " << fs::relative(w.map_path, dir).string()
     << "\nzones: " << fs::relative(w.zones_path, dir).string() << "\nlidar_profiles: [";
-  for (size_t i = 0; i < w.lidar_profiles.size(); ++i) o << (i ? ", " : "") << w.lidar_profiles[i];
-  o << "]\ndefault_lidar_profile: " << w.default_lidar_profile << "\n";
+  for (size_t i = 0; i < w.lidar_profiles.size(); ++i) o << (i ? ", " : "") << relativeToWorld(w.lidar_profiles[i], dir);
+  o << "]\ndefault_lidar_profile: " << relativeToWorld(w.default_lidar_profile, dir) << "\n";
   if (w.range_noise_std_m >= 0 || w.dropout_probability >= 0) {
     o << "lidar_overrides:\n";
     if (w.range_noise_std_m >= 0) o << "  range_noise_std_m: " << w.range_noise_std_m << "\n";

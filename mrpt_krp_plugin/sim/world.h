@@ -14,7 +14,8 @@ namespace krp {
 ///   name: warehouse
 ///   map: warehouse.yaml
 ///   zones: warehouse.zones.yaml
-///   lidar_profiles: [lds01, omni_12m, safety_270]
+///   lidar_profiles: [lds01, omni_12m, safety_270]   # built-in names, or profile files (NAME.yaml,
+///                                                    # beside the world file; sim/lidar_profile_file.h)
 ///   default_lidar_profile: omni_12m
 ///   lidar_overrides: {range_noise_std_m: 0.01, dropout_probability: 0.01}   # optional
 ///   clutter: {boxes_per_100m2: 0.8, box_min_side_m: 0.3, box_max_side_m: 0.8,

@@ -15,6 +15,8 @@ from . import classifier_models
 
 FORMAT = "mrpt_krp_plugin-models"
 FORMAT_VERSION = 1
+# A user's lidar profile (krp-dataset --lidar NAME.yaml), copied beside the models under this name.
+LIDAR_PROFILE_FILE = "lidar.yaml"
 
 
 def map_fingerprint(map_path: Path) -> dict:
@@ -35,10 +37,25 @@ def read_landmarks(landmarks_yaml: Path) -> dict:
                       for z in doc["zones"]]}
 
 
-def rendering_args(m: dict) -> list:
-    """krp-dataset flags that render submaps as the models in `m` were trained on: lidar, submap
-    size and orientation, SDT clip (manifests from before orientations were heading up)."""
-    return ["--lidar", m["lidar"]["name"], "--size-px", str(m["submap"]["size_px"]),
+def lidar_block(card_lidar: dict) -> dict:
+    """The manifest's lidar: the dataset card's, plus the profile file kept beside the models when
+    the lidar came from the user's own file (no built-in name stands for it)."""
+    block = dict(card_lidar)
+    if block.get("from_file"):
+        block["profile_file"] = LIDAR_PROFILE_FILE
+    return block
+
+
+def rendering_args(m: dict, models_dir=None) -> list:
+    """krp-dataset flags that render submaps as the models in `m` (in `models_dir`) were trained on:
+    lidar, submap size and orientation, SDT clip (manifests from before orientations were heading
+    up). A lidar from a profile file is rendered from the copy in `models_dir`."""
+    lidar = m["lidar"]["name"]
+    if m["lidar"].get("profile_file"):
+        if models_dir is None:
+            raise ValueError("rendering_args: the models' lidar is a profile file; pass their folder")
+        lidar = str(Path(models_dir) / m["lidar"]["profile_file"])
+    return ["--lidar", lidar, "--size-px", str(m["submap"]["size_px"]),
             "--size-m", str(m["submap"]["size_m"]), "--sdt-clip-m", str(m["sdt_clip_m"]),
             "--orientation", m["submap"].get("orientation", "heading_up")]
 
@@ -60,7 +77,7 @@ def build(card: dict, card_sha256: str, map_path: Path, landmarks: dict, classif
         "format_version": FORMAT_VERSION,
         "world": card["world"],
         "map": map_fingerprint(map_path),
-        "lidar": card["lidar"],
+        "lidar": lidar_block(card["lidar"]),
         "submap": card["submap"],
         "sdt_clip_m": card["sdt_clip_m"],
         "zones": card["zones"],

@@ -30,9 +30,10 @@ PARITY_CONF = 0.05
 PARITY_IOU = 0.7
 
 
-def render_images(dataset_app: Path, world_dir: Path, manifest: dict, out: Path, per_zone: int) -> tuple:
+def render_images(dataset_app: Path, world_dir: Path, manifest: dict, models: Path, out: Path,
+                  per_zone: int) -> tuple:
     subprocess.run([str(dataset_app), "--world", manifest["world"], "--world-dir", str(world_dir),
-                    *rendering_args(manifest), "--out", str(out), "--samples-per-zone", str(per_zone),
+                    *rendering_args(manifest, models), "--out", str(out), "--samples-per-zone", str(per_zone),
                     "--changed-per-zone", "1", "--seed", "7"],
                    check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     occ = sorted((out / "classifier").glob("*/*/*.png"))
@@ -149,7 +150,8 @@ def main(argv=None) -> int:
     manifest = json.loads((args.models / "manifest.json").read_text())
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
-        occ, sdt = render_images(args.krp_dataset, args.world_dir, manifest, work / "images", args.per_zone)
+        occ, sdt = render_images(args.krp_dataset, args.world_dir, manifest, args.models, work / "images",
+                                 args.per_zone)
         cpp = run_cpp(args.krp_infer, args.models, occ, sdt, work / "raw")
         failures = (check_outputs(args.models, manifest, cpp, work / "raw") if args.check == "outputs"
                     else check_decode(args.models, manifest, cpp, work / "raw", work))

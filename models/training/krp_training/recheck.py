@@ -90,7 +90,7 @@ def dataset_command(m: dict, args, source: list, landmarks_yaml: Path, dataset_d
     d = m["dataset"]
     scenario = d.get("scenario") or {}
     block_m = (d.get("split") or {}).get("block_m", DEFAULT_BLOCK_M)
-    cmd = [Path(args.bin_dir) / "krp-dataset", *source, *manifest_io.rendering_args(m),
+    cmd = [Path(args.bin_dir) / "krp-dataset", *source, *manifest_io.rendering_args(m, args.models),
            "--out", dataset_dir, "--samples-per-zone", args.samples_per_zone,
            "--changed-per-zone", args.changed_per_zone, "--strength", scenario.get("strength", 1.0),
            "--landmarks", landmarks_yaml, "--block-m", block_m, "--seed", args.seed, "--split-seed", d["seed"]]

@@ -44,7 +44,9 @@ def parse_args(argv):
     src.add_argument("--world", help="a sim world name under sim_worlds/ or a *.world.yaml")
     src.add_argument("--map", help="a map file (ROS map .yaml, .gridmap, OctoMap .bt/.ot)")
     p.add_argument("--zones", help="zones.yaml for --map (default: automatic zoning)")
-    p.add_argument("--lidar", help="lidar profile (default: the world's default; omni_12m for --map)")
+    p.add_argument("--lidar", help="lidar profile: a built-in name (lds01, omni_12m, safety_270) or your scanner's "
+                                   "NAME.yaml (fov_deg, beams, max_range_m; see the README) (default: the world's "
+                                   "default; omni_12m for --map)")
     p.add_argument("--out", required=True, help="model folder to write (replaced at the end if it exists)")
     p.add_argument("--work-dir", help="dataset and training runs (default: out/train/<name>)")
     p.add_argument("--samples-per-zone", type=int, default=4000,
@@ -219,6 +221,10 @@ def main(argv=None) -> int:
     # The zones the dataset was made with (given or automatic), for the runtime's zone search.
     shutil.copyfile(dataset_dir / "zones.yaml", partial / "zones.yaml")
     zone_outlines = {"file": "zones.yaml", "sha256": export.sha256(partial / "zones.yaml")}
+    # A user's own lidar goes with the models: fresh submaps for them (krp-recheck-models, the
+    # parity check) need its profile, which no built-in name stands for.
+    if card["lidar"].get("from_file"):
+        shutil.copyfile(dataset_dir / "lidar.yaml", partial / manifest.LIDAR_PROFILE_FILE)
     m = manifest.build(card, export.sha256(card_path), _map_path(args), landmarks,
                        {"file": "zone_classifier.onnx", "sha256": export.sha256(partial / "zone_classifier.onnx"),
                         "architecture": args.classifier, **cls_onnx, "metrics": cls_metrics},

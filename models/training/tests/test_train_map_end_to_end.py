@@ -114,6 +114,36 @@ def test_a_map_file_without_zones_is_zoned_and_trained(tmp_path, bin_dir):
     assert res.returncode == 0, res.stderr
 
 
+def test_a_users_own_lidar_profile_goes_with_the_models(tmp_path, bin_dir):
+    """A scanner no built-in profile matches (180 deg, as a SICK LMS): its profile file trains the
+    models, is kept beside them, and renders fresh submaps for them (what krp-recheck-models runs)."""
+    from krp_training import manifest as manifest_io
+    profile = tmp_path / "front_sick.yaml"
+    profile.write_text("fov_deg: 180\nbeams: 361\nmax_range_m: 12\nrange_noise_std_m: 0.02\nmount_x_m: 0.2\n")
+    map_file = train_map.REPO_ROOT / "sim_worlds" / "office_two_zone" / "office_two_zone.yaml"
+    out = tmp_path / "sick_floor"
+    rc = train_map.main(["--map", str(map_file), "--lidar", str(profile), "--out", str(out), "--work-dir",
+                         str(tmp_path / "work"), "--samples-per-zone", "6", "--changed-per-zone", "2",
+                         "--classifier-epochs", "1", "--keypoint-epochs", "1", "--bin-dir", str(bin_dir),
+                         "--device", "cpu"])
+    assert rc == 0
+    m = json.loads((out / "manifest.json").read_text())
+    lidar = m["lidar"]
+    assert lidar["name"] == "front_sick" and lidar["from_file"] is True
+    assert lidar["fov_deg"] == pytest.approx(180.0) and lidar["beams"] == 361 and lidar["mount_x_m"] == 0.2
+    assert lidar["profile_file"] == "lidar.yaml" and "fov_deg: 180" in (out / "lidar.yaml").read_text()
+    args = manifest_io.rendering_args(m, out)
+    assert args[:2] == ["--lidar", str(out / "lidar.yaml")]
+    with pytest.raises(ValueError, match="profile file"):
+        manifest_io.rendering_args(m)
+    fresh = subprocess.run([str(bin_dir / "krp-dataset"), "--map", str(map_file), "--zones", str(out / "zones.yaml"),
+                            *args, "--out", str(tmp_path / "fresh"), "--samples-per-zone", "1",
+                            "--changed-per-zone", "1"], capture_output=True, text=True)
+    assert fresh.returncode == 0, fresh.stderr
+    card = json.loads((tmp_path / "fresh" / "dataset_card.json").read_text())
+    assert card["lidar"]["name"] == "front_sick" and card["lidar"]["beams"] == 361
+
+
 def test_the_estimate_scales_with_images_and_epochs():
     one = train_map.estimate_rest_s(1000, 10, 600, 40)
     assert one["classifier"] == 1000 * 10 * train_map.SECONDS_PER_IMAGE_EPOCH["compact"]
