@@ -30,8 +30,8 @@ for m in "${methods[@]}"; do
     --out-dir "$work/filter_$m" >/dev/null
 done
 
-# `key: value` from a _SUMMARY.txt
-value() { sed -n "s/^$2: //p" "$1" | head -1; }
+# shellcheck source=scripts/localize_summary.sh
+source "$root/scripts/localize_summary.sh"
 sweep="$work/sweep/krp_localize_SUMMARY.txt"
 {
   echo "# Freiburg building 101: a real log, relocalized"
@@ -50,9 +50,7 @@ sweep="$work/sweep/krp_localize_SUMMARY.txt"
   echo
   echo "Right = best hypothesis within 0.5 m and 10 deg of the log's corrected pose."
   echo
-  echo "| scans | said localized | localized and right | localized but wrong | best right (any verdict) | median error when localized | time per scan, median / p95 |"
-  echo "|---|---|---|---|---|---|---|"
-  echo "| $(value "$sweep" "scans relocalized") | $(value "$sweep" "said localized") | $(value "$sweep" "localized and right") | $(value "$sweep" "localized but wrong") | $(value "$sweep" "best hypothesis right (any verdict)") | $(value "$sweep" "median error when localized") | $(value "$sweep" "time per scan" | sed 's/median //; s/, p95 / \/ /') |"
+  single_scan_table "$sweep"
   echo
   echo "Per scan (\`single_scan.csv\`, \`single_scan.png\`): rerun the command; they are not committed, since their poses"
   echo "would reproduce the third-party trajectory."
@@ -61,19 +59,14 @@ sweep="$work/sweep/krp_localize_SUMMARY.txt"
   echo
   echo "\`krp-localize --map odd_scans_map.yaml --carmen freiburg-101-corrected.log.gz --truth-from-log 1 --method M\`"
   echo
-  echo "| method | initial particles | converged | updates to convergence | final error | median error | confident but wrong | localization CPU |"
-  echo "|---|---|---|---|---|---|---|---|"
-  for m in "${methods[@]}"; do
-    s="$work/filter_$m/krp_localize_SUMMARY.txt"
-    echo "| $m | $(value "$s" "initial particles") | $(value "$s" "converged") | $(value "$s" "updates to convergence") | $(value "$s" "final error") | $(value "$s" "median error") | $(value "$s" "confident but wrong") | $(value "$s" "localization CPU") |"
-  done
+  filter_table "$work" "${methods[@]}"
   echo
   echo "## What this shows and what it does not"
   echo
   echo "- The log's odometry fields equal its corrected poses, so the filters track with perfect odometry after"
   echo "  the first update: the filter table measures the global start, not tracking under odometry drift."
-  echo "- The learned relocalizer is not run here: it needs models trained on this map (\`krp-train-map\`), which"
-  echo "  this check does not train."
+  echo "- The learned relocalizer is not run here: \`scripts/check_freiburg_learned.sh\` trains models for this map"
+  echo "  and the scanner, and writes \`LEARNED.md\` beside this report."
   echo "- Times are wall clock on whatever machine ran the script, one thread; the map is 88 x 42 m and the"
   echo "  scanner reaches 80 m, so the matcher searches far more than on the simulated worlds."
 } > "$out/REPORT.md"
