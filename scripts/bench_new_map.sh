@@ -7,7 +7,8 @@
 # to out/new_map/NAME (or OUT). The trials add the office worlds' clutter (boxes, pallets, people)
 # to the map. Environment: OUT, TRIALS (30), STEPS (10), SEED (1), SAMPLES_PER_ZONE (1000: poses per zone for
 # training; krp-train-map's default of 4000 takes about 4x longer on a large map),
-# METHODS (uniform-mcl,amcl-kld,seeded,global-matcher-guarded).
+# METHODS (uniform-mcl,amcl-kld,seeded,global-matcher-guarded), LIDAR (omni_12m: a built-in profile
+# name, or your scanner's profile file NAME.yaml, which trains the models and simulates the trials).
 # Installs what is missing and builds first (as krp-train-map does).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -18,8 +19,13 @@ name="${2:-$(basename "${map%.*}")}"
 models="out/models/$name"
 out="${OUT:-out/new_map/$name}"
 world="$models/$name.world.yaml"
+lidar="${LIDAR:-omni_12m}"
+if [[ "$lidar" == *.yaml || "$lidar" == *.yml ]]; then
+  [[ -f "$lidar" ]] || { echo "bench_new_map: lidar profile file '$lidar' not found" >&2; exit 2; }
+  lidar="$(realpath "$lidar")"
+fi
 if [[ ! -f "$models/manifest.json" ]]; then
-  scripts/krp-train-map --map "$map" --samples-per-zone "${SAMPLES_PER_ZONE:-1000}" --out "$models"
+  scripts/krp-train-map --map "$map" --lidar "$lidar" --samples-per-zone "${SAMPLES_PER_ZONE:-1000}" --out "$models"
 else
   echo "bench_new_map: using the models already in $models (delete the folder to retrain)"
 fi
@@ -33,8 +39,8 @@ cat > "$world.partial" <<YAML
 name: $name
 map: $(realpath "$map")
 zones: $(realpath "$models/zones.yaml")
-lidar_profiles: [omni_12m]
-default_lidar_profile: omni_12m
+lidar_profiles: [$lidar]
+default_lidar_profile: $lidar
 $clutter
 YAML
 mv "$world.partial" "$world"
