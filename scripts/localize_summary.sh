@@ -7,9 +7,9 @@ summary_value() { sed -n "s/^$2: //p" "$1" | head -1; }
 # single_scan_table SUMMARY: header and row of a `--single-scan all` sweep.
 single_scan_table() {
   local s="$1"
-  echo "| scans | said localized | localized and right | localized but wrong | best right (any verdict) | median error when localized | time per scan, median / p95 |"
-  echo "|---|---|---|---|---|---|---|"
-  echo "| $(summary_value "$s" "scans relocalized") | $(summary_value "$s" "said localized") | $(summary_value "$s" "localized and right") | $(summary_value "$s" "localized but wrong") | $(summary_value "$s" "best hypothesis right (any verdict)") | $(summary_value "$s" "median error when localized") | $(summary_value "$s" "time per scan" | sed 's/median //; s/, p95 / \/ /') |"
+  echo "| scans | said localized | localized and right | localized but wrong | best right (any verdict) | median error when localized | localized from the keypoint model | time per scan, median / p95 |"
+  echo "|---|---|---|---|---|---|---|---|"
+  echo "| $(summary_value "$s" "scans relocalized") | $(summary_value "$s" "said localized") | $(summary_value "$s" "localized and right") | $(summary_value "$s" "localized but wrong") | $(summary_value "$s" "best hypothesis right (any verdict)") | $(summary_value "$s" "median error when localized") | $(summary_value "$s" "localized from the keypoint model") | $(summary_value "$s" "time per scan" | sed 's/median //; s/, p95 / \/ /') |"
 }
 
 # filter_table DIR METHOD...: one row per method, from DIR/filter_METHOD/krp_localize_SUMMARY.txt.

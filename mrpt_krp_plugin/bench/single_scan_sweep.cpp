@@ -52,6 +52,7 @@ std::vector<SingleScanRecord> sweepSingleScans(const HypothesisSource& source, c
       r.best = h.pose;
       r.confidence = h.confidence;
       r.fit_fraction = h.fit_fraction;
+      r.best_from_keypoints = h.origin == PoseOrigin::kKeypoints;
       if (!truth.empty()) {
         r.error_xy_m = std::hypot(h.pose.x - truth[i].x, h.pose.y - truth[i].y);
         r.error_phi_deg = std::abs(mrpt::math::wrapToPi(h.pose.phi - truth[i].phi)) * kRadToDeg;
@@ -75,6 +76,7 @@ SingleScanSummary summarizeSweep(const std::vector<SingleScanRecord>& records) {
     s.best_right += r.best_right ? 1 : 0;
     if (!r.localized) continue;
     ++s.localized;
+    s.localized_from_keypoints += r.best_from_keypoints ? 1 : 0;
     (r.best_right ? s.localized_right : s.localized_wrong) += 1;
     if (r.error_xy_m >= 0) errors_xy.push_back(r.error_xy_m), errors_phi.push_back(r.error_phi_deg);
   }
@@ -93,7 +95,7 @@ std::string sweepCsv(const std::vector<SingleScanRecord>& records) {
   std::ostringstream o;
   o.precision(6);
   o << "step,localized,hypotheses,best_x_m,best_y_m,best_yaw_deg,confidence,fit_fraction,time_ms,error_xy_m,error_phi_deg,"
-       "best_right,reason\n";
+       "best_right,best_from,reason\n";
   for (const auto& r : records) {
     o << r.step << "," << r.localized << "," << r.hypotheses << ",";
     if (r.best)
@@ -103,7 +105,8 @@ std::string sweepCsv(const std::vector<SingleScanRecord>& records) {
     std::string reason = r.reason;
     std::replace(reason.begin(), reason.end(), ',', ';');
     o << "," << r.confidence << "," << r.fit_fraction << "," << r.time_ms << "," << r.error_xy_m << "," << r.error_phi_deg
-      << "," << r.best_right << "," << reason << "\n";
+      << "," << r.best_right << "," << (!r.best ? "" : r.best_from_keypoints ? "keypoints" : "matcher") << "," << reason
+      << "\n";
   }
   return o.str();
 }
@@ -123,6 +126,7 @@ std::string sweepSummaryText(const SingleScanSummary& s) {
       << s.median_error_xy_m << " m, " << s.median_error_phi_deg << " deg\n";
   else
     o << "no ground truth: right and wrong not counted\n";
+  o << "localized from the keypoint model: " << pct(s.localized_from_keypoints) << "\n";
   o << "time per scan: median " << s.median_ms << " ms, p95 " << s.p95_ms << " ms\n";
   return o.str();
 }

@@ -28,6 +28,9 @@ struct SingleScanRecord {
   double error_xy_m = -1.0;                 ///< best vs truth; -1 without truth or hypothesis
   double error_phi_deg = -1.0;
   bool best_right = false;  ///< the best is within the criteria's distance and heading of the truth
+  /// The best came from the keypoint model's alignment, not from a correlative search (the
+  /// learned relocalizer's zone search or cross-check, or the global matcher).
+  bool best_from_keypoints = false;
 };
 
 /// Counts over a sweep. "right" and "wrong" need the truth.
@@ -37,6 +40,9 @@ struct SingleScanSummary {
   std::size_t localized_right = 0;
   std::size_t localized_wrong = 0;  ///< the confident-but-wrong answers that matter on a robot
   std::size_t best_right = 0;       ///< best hypothesis right, whatever the verdict
+  /// Localized answers whose best came from the keypoint model: what the learned models carry
+  /// themselves, against the correlative searches that check and back them up.
+  std::size_t localized_from_keypoints = 0;
   bool has_truth = false;
   double median_error_xy_m = -1.0;     ///< over the localized answers; -1 without any
   double median_error_phi_deg = -1.0;  ///< over the localized answers

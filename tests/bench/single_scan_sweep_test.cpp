@@ -32,6 +32,7 @@ HypothesisSource scriptedSource(const std::vector<mrpt::math::TPose2D>& truth) {
     Ranking r;
     PoseHypothesis h;
     h.confidence = 0.9;
+    h.origin = i % 8 == 0 ? PoseOrigin::kKeypoints : PoseOrigin::kMatcher;
     switch (i % 4) {
       case 0: h.pose = {truth[i].x + 0.1, truth[i].y, truth[i].phi + 0.05}; r.localized = true; break;
       case 1: h.pose = {truth[i].x + 3.0, truth[i].y, truth[i].phi}; r.localized = true; break;
@@ -63,6 +64,15 @@ TEST(SingleScanSweep, CountsRightAndConfidentlyWrongAnswersAgainstTheTruth) {
   // the two middles, as everywhere in the project (common/statistics.h).
   EXPECT_NEAR(s.median_error_xy_m, 1.55, 1e-9);
   EXPECT_NE(sweepSummaryText(s).find("localized but wrong: 2 (25 %)"), std::string::npos) << sweepSummaryText(s);
+  // Only step 0's answer came from the keypoint model.
+  EXPECT_TRUE(records[0].best_from_keypoints);
+  EXPECT_FALSE(records[4].best_from_keypoints);
+  EXPECT_EQ(s.localized_from_keypoints, 1u);
+  EXPECT_NE(sweepSummaryText(s).find("localized from the keypoint model: 1 (12.5 %)"), std::string::npos);
+  const auto csv = sweepCsv(records);
+  EXPECT_NE(csv.find(",best_right,best_from,reason\n"), std::string::npos);
+  EXPECT_NE(csv.find(",keypoints,\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",,nothing fits\n"), std::string::npos) << csv;
 }
 
 TEST(SingleScanSweep, StrideSkipsScansAndTruthMustMatchTheSteps) {
