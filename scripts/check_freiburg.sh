@@ -10,11 +10,8 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
-data="${1:-$root/../shared/data/freiburg-101}"
-out="${2:-reports/freiburg_101}"
-log="$data/freiburg-101-corrected.log.gz"
-bin=./build/mrpt_krp_plugin/apps
-[[ -f "$log" ]] || { echo "check_freiburg: $log not found (the shared data folder)" >&2; exit 2; }
+# shellcheck source=scripts/freiburg_inputs.sh
+source "$root/scripts/freiburg_inputs.sh" "$@"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"

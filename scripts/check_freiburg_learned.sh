@@ -15,13 +15,10 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
-data="${1:-$root/../shared/data/freiburg-101}"
-out="${2:-reports/freiburg_101}"
-log="$data/freiburg-101-corrected.log.gz"
-bin=./build/mrpt_krp_plugin/apps
+# shellcheck source=scripts/freiburg_inputs.sh
+source "$root/scripts/freiburg_inputs.sh" "$@"
 keep=out/freiburg_101_learned
 models="$keep/models"
-[[ -f "$log" ]] || { echo "check_freiburg_learned: $log not found (the shared data folder)" >&2; exit 2; }
 mkdir -p "$keep" "$out"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
