@@ -50,6 +50,10 @@ fi
 sweep_cmd=("$bin/krp-localize" --map "$map" --carmen "$log" --truth-from-log 1 --method seeded --models "$models"
            --single-scan all --single-scan-stride 2 --out-dir "$work/sweep")
 "${sweep_cmd[@]}"
+# The zone search looks in the classifier's most likely zone only; a wider search costs time.
+wide_cmd=("$bin/krp-localize" --map "$map" --carmen "$log" --truth-from-log 1 --method seeded --models "$models"
+          --search-zones 3 --single-scan all --single-scan-stride 2 --out-dir "$work/sweep_wide")
+"${wide_cmd[@]}" >/dev/null
 methods=(seeded seeded-no-guard uniform-mcl)
 for m in "${methods[@]}"; do
   "$bin/krp-localize" --map "$map" --carmen "$log" --truth-from-log 1 --method "$m" --models "$models" \
@@ -84,6 +88,11 @@ sweep="$work/sweep/krp_localize_SUMMARY.txt"
   echo "has the same scans relocalized by the global matcher, which needs no training."
   echo
   single_scan_table "$sweep"
+  echo
+  echo "The zone search, which runs when the keypoints give no credible pose, searches the classifier's most"
+  echo "likely zone; the three most likely (\`--search-zones 3\`, the rest as above) find more, at a cost in time:"
+  echo
+  single_scan_table "$work/sweep_wide/krp_localize_SUMMARY.txt"
   echo
   echo "## Filters over the whole log from a global start"
   echo
