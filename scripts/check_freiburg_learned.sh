@@ -54,6 +54,10 @@ sweep_cmd=("$bin/krp-localize" --map "$map" --carmen "$log" --truth-from-log 1 -
 wide_cmd=("$bin/krp-localize" --map "$map" --carmen "$log" --truth-from-log 1 --method seeded --models "$models"
           --search-zones 3 --single-scan all --single-scan-stride 2 --out-dir "$work/sweep_wide")
 "${wide_cmd[@]}" >/dev/null
+# The same scans by the whole-map matcher, which needs no models, in the same run for the times.
+matcher_cmd=("$bin/krp-localize" --map "$map" --carmen "$log" --truth-from-log 1 --method global-matcher
+             --single-scan all --single-scan-stride 2 --out-dir "$work/sweep_matcher")
+"${matcher_cmd[@]}" >/dev/null
 methods=(seeded seeded-no-guard uniform-mcl)
 for m in "${methods[@]}"; do
   "$bin/krp-localize" --map "$map" --carmen "$log" --truth-from-log 1 --method "$m" --models "$models" \
@@ -80,19 +84,17 @@ sweep="$work/sweep/krp_localize_SUMMARY.txt"
   echo "both models on **simulated** scans of it only ($(manifest 'round(m["training"]["total_seconds"]/60, 1)') min on $(nproc) cores; classifier"
   echo "$(manifest 'round(100*m["classifier"]["metrics"]["accuracy"]["test"], 1)') % on its simulated test split, keypoint pose mAP@50 $(manifest 'round(m["keypoints"]["metrics"]["test"]["pose"]["map50"], 3)')). The models and the map are not committed."
   echo
-  echo "## Single scan, no filter, no motion: the **even** scans, which the map never saw"
+  echo "## Single scan, no filter, no motion: the **even** scans, which the map never saw (146)"
   echo
   echo "\`$(shown "${sweep_cmd[@]}")\`"
   echo
-  echo "Right = best hypothesis within 0.5 m and 10 deg of the log's corrected pose. \`REPORT.md\` beside this file"
-  echo "has the same scans relocalized by the global matcher, which needs no training."
+  echo "Right = best hypothesis within 0.5 m and 10 deg of the log's corrected pose. The zone search, which runs"
+  echo "when the keypoints give no credible pose, searches the classifier's most likely zone; the second row"
+  echo "searches the three most likely (\`--search-zones 3\`). The third row is the whole-map correlative matcher,"
+  echo "which needs no models (\`--method global-matcher\`, no \`--models\`). All three ran one after the other."
   echo
-  single_scan_table "$sweep"
-  echo
-  echo "The zone search, which runs when the keypoints give no credible pose, searches the classifier's most"
-  echo "likely zone; the three most likely (\`--search-zones 3\`, the rest as above) find more, at a cost in time:"
-  echo
-  single_scan_table "$work/sweep_wide/krp_localize_SUMMARY.txt"
+  single_scan_comparison "learned models" "$sweep" "learned, --search-zones 3" "$work/sweep_wide/krp_localize_SUMMARY.txt" \
+    "global matcher" "$work/sweep_matcher/krp_localize_SUMMARY.txt"
   echo
   echo "## Filters over the whole log from a global start"
   echo

@@ -23,6 +23,8 @@ constexpr int kMaxSearchNodes = 1000000000;
 constexpr int kMaxRivalRefinements = 10;
 /// A wall-aligned submap has four turns.
 constexpr int kMaxSubmapTurns = 4;
+/// More zones than any map is zoned into: searching them all is searching the whole map.
+constexpr int kMaxSearchZones = 10000;
 // Each stored scan is replayed for every new look-alike: beyond this the replay costs more than a
 // second's worth of updates.
 constexpr int kMaxHistoryUpdates = 50;
@@ -87,6 +89,7 @@ const std::map<std::string, Reader>& readers() {
       {"cross_check", boolean(&NodeParams::cross_check)},
       {"top_turns", integer(&NodeParams::top_turns, 1, kMaxSubmapTurns)},
       {"stop_turns_once_localized", boolean(&NodeParams::stop_turns_once_localized)},
+      {"search_zones", integer(&NodeParams::search_zones, 0, kMaxSearchZones)},
       {"relocalize_on_startup", boolean(&NodeParams::relocalize_on_startup)},
       {"relocalize_on_kidnap", boolean(&NodeParams::relocalize_on_kidnap)},
       {"publish_when_not_localized", boolean(&NodeParams::publish_when_not_localized)},
@@ -154,6 +157,7 @@ HypothesisSourceParams NodeParams::hypothesisSource() const {
   h.learned.cross_check.enabled = cross_check;
   h.learned.top_turns = top_turns;
   h.learned.stop_turns_once_localized = stop_turns_once_localized;
+  h.learned.zone_search.zones = search_zones;
   useMinLocalizedFitFraction(min_localized_fit_fraction, h.learned, h.matcher);
   if (!calibration_file.empty()) useConfidenceCalibration(readConfidenceCalibration(calibration_file), h.learned, h.matcher);
   return h;

@@ -39,6 +39,9 @@ struct NodeParams {
   /// `learned`: with the cross-check, the next turn runs only while no turn so far gave a
   /// credible answer (RelocalizerParams::stop_turns_once_localized)
   bool stop_turns_once_localized = RelocalizerParams{}.stop_turns_once_localized;
+  /// `learned`, with zones: the classifier's most likely zones the correlative matcher searches
+  /// when the keypoints give no credible pose (ZoneSearchParams::zones; 0 = no zone search)
+  int search_zones = ZoneSearchParams{}.zones;
   bool relocalize_on_startup = true;       ///< relocalize from the first scan
   bool relocalize_on_kidnap = false;       ///< relocalize when the tracked pose stops fitting the scans
   bool publish_when_not_localized = false;  ///< publish `initialpose` even when the relocalizer is unsure

@@ -30,6 +30,7 @@ TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
   EXPECT_EQ(doc["min_valid_returns"].as<int>(), d.min_valid_returns);
   EXPECT_EQ(doc["top_turns"].as<int>(), d.top_turns);
   EXPECT_EQ(doc["stop_turns_once_localized"].as<bool>(), d.stop_turns_once_localized);
+  EXPECT_EQ(doc["search_zones"].as<int>(), d.search_zones);
   EXPECT_EQ(doc["max_particles"].as<int>(), d.max_particles);
   EXPECT_DOUBLE_EQ(doc["max_scan_age_s"].as<double>(), d.max_scan_age_s);
   EXPECT_DOUBLE_EQ(doc["trigger_timeout_s"].as<double>(), d.trigger_timeout_s);
@@ -86,11 +87,13 @@ TEST(RosNodeParams, TheGuardGetsTheChargeSwitchesAndItsBudget) {
   EXPECT_EQ(g.history_updates, 10);
 }
 
-TEST(RosNodeParams, TheTurnSettingsReachTheLearnedRelocalizer) {
+TEST(RosNodeParams, TheTurnAndZoneSearchSettingsReachTheLearnedRelocalizer) {
   NodeParams p;
   p.top_turns = 4;
   p.stop_turns_once_localized = false;
+  p.search_zones = 3;
   const auto h = p.hypothesisSource();
+  EXPECT_EQ(h.learned.zone_search.zones, 3);
   EXPECT_EQ(h.learned.top_turns, 4);
   EXPECT_FALSE(h.learned.stop_turns_once_localized);
   EXPECT_EQ(NodeParams{}.hypothesisSource().learned.top_turns, RelocalizerParams{}.top_turns);
