@@ -2,6 +2,7 @@
 #include "mrpt_krp_plugin/common/yaml_file.h"
 
 #include <filesystem>
+#include <sstream>
 
 #include "mrpt_krp_plugin/common/input_error.h"
 
@@ -23,6 +24,23 @@ void rejectUnknownYamlKeys(const YAML::Node& node, const std::set<std::string>& 
     if (!known.count(key))
       throw InputError(file, (context.empty() ? "" : context + ": ") + "unknown key '" + key_prefix + key + "'");
   }
+}
+
+double yamlNumberInRange(const YAML::Node& node, const std::string& key, const std::string& file, double lo, double hi,
+                         bool exclude_lo) {
+  double v = 0.0;
+  try {
+    v = node[key].as<double>();
+  } catch (const YAML::Exception&) {
+    throw InputError(file, "key '" + key + "' is not a number");
+  }
+  const bool above_lo = exclude_lo ? v > lo : v >= lo;
+  if (!(above_lo && v <= hi)) {
+    std::ostringstream s;
+    s << "key '" << key << "' = " << v << " is outside " << (exclude_lo ? "(" : "[") << lo << ", " << hi << "]";
+    throw InputError(file, s.str());
+  }
+  return v;
 }
 
 }  // namespace krp

@@ -32,4 +32,10 @@ auto readYamlFile(const std::string& path, Interpret&& interpret) {
 void rejectUnknownYamlKeys(const YAML::Node& node, const std::set<std::string>& known, const std::string& file,
                            const std::string& context = "", const std::string& key_prefix = "");
 
+/// The number at `key` of the mapping `node`, which must lie in [lo, hi], or in (lo, hi] with
+/// `exclude_lo`. Throws InputError(file, "key '<key>' is not a number") or
+/// InputError(file, "key '<key>' = <v> is outside [lo, hi]") otherwise.
+double yamlNumberInRange(const YAML::Node& node, const std::string& key, const std::string& file, double lo, double hi,
+                         bool exclude_lo = false);
+
 }  // namespace krp

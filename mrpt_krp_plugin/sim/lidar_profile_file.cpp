@@ -21,23 +21,6 @@ constexpr double kMaxRangeM = 1000.0;
 constexpr double kMaxNoiseStdM = 1.0;
 constexpr double kMaxMountOffsetM = 10.0;
 
-double number(const YAML::Node& root, const std::string& key, const std::string& path, double lo, double hi,
-              bool lo_open) {
-  double v = 0.0;
-  try {
-    v = root[key].as<double>();
-  } catch (const YAML::Exception&) {
-    throw InputError(path, "key '" + key + "' is not a number");
-  }
-  const bool above = lo_open ? v > lo : v >= lo;
-  if (!(above && v <= hi)) {
-    std::ostringstream s;
-    s << "key '" << key << "' = " << v << " is outside " << (lo_open ? "(" : "[") << lo << ", " << hi << "]";
-    throw InputError(path, s.str());
-  }
-  return v;
-}
-
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -60,14 +43,14 @@ LidarProfile readLidarProfileFile(const std::string& path) {
     LidarProfile p;
     p.name = root["name"] ? root["name"].as<std::string>() : std::filesystem::path(path).stem().string();
     if (p.name.empty()) throw InputError(path, "key 'name' is empty");
-    p.fov_rad = number(root, "fov_deg", path, 0.0, kMaxFovDeg, true) * M_PI / 180.0;
-    const double beams = number(root, "beams", path, kMinBeams, kMaxBeams, false);
+    p.fov_rad = yamlNumberInRange(root, "fov_deg", path, 0.0, kMaxFovDeg, true) * M_PI / 180.0;
+    const double beams = yamlNumberInRange(root, "beams", path, kMinBeams, kMaxBeams);
     if (beams != std::floor(beams)) throw InputError(path, "key 'beams' must be a whole number");
     p.beams = static_cast<int>(beams);
-    p.max_range_m = number(root, "max_range_m", path, 0.0, kMaxRangeM, true);
-    if (root["range_noise_std_m"]) p.range_noise_std_m = number(root, "range_noise_std_m", path, 0.0, kMaxNoiseStdM, false);
-    if (root["dropout_probability"]) p.dropout_probability = number(root, "dropout_probability", path, 0.0, 1.0, false);
-    if (root["mount_x_m"]) p.mount_x_m = number(root, "mount_x_m", path, -kMaxMountOffsetM, kMaxMountOffsetM, false);
+    p.max_range_m = yamlNumberInRange(root, "max_range_m", path, 0.0, kMaxRangeM, true);
+    if (root["range_noise_std_m"]) p.range_noise_std_m = yamlNumberInRange(root, "range_noise_std_m", path, 0.0, kMaxNoiseStdM);
+    if (root["dropout_probability"]) p.dropout_probability = yamlNumberInRange(root, "dropout_probability", path, 0.0, 1.0);
+    if (root["mount_x_m"]) p.mount_x_m = yamlNumberInRange(root, "mount_x_m", path, -kMaxMountOffsetM, kMaxMountOffsetM);
     return p;
   });
 }

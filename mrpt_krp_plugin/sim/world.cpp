@@ -17,23 +17,6 @@ namespace fs = std::filesystem;
 
 namespace krp {
 namespace {
-
-double number(const YAML::Node& n, const std::string& key, const std::string& file, double lo, double hi) {
-  double v;
-  try {
-    v = n[key].as<double>();
-  } catch (const YAML::Exception&) {
-    throw InputError(file, "key '" + key + "' is not a number");
-  }
-  if (!(v >= lo && v <= hi))
-    throw InputError(file, "key '" + key + "' = " + std::to_string(v) + " is outside [" + std::to_string(lo) + ", " +
-                               std::to_string(hi) + "]");
-  return v;
-}
-
-}  // namespace
-
-namespace {
 /// The same profile: the same name, or the same file however its path is written.
 bool sameProfile(const std::string& a, const std::string& b) {
   if (a == b) return true;
@@ -94,8 +77,8 @@ World interpretWorld(const YAML::Node& root, const std::string& path) {
     throw InputError(path, "default_lidar_profile '" + w.default_lidar_profile + "' is not in lidar_profiles");
   if (const auto o = root["lidar_overrides"]) {
     rejectUnknownYamlKeys(o, {"range_noise_std_m", "dropout_probability"}, path, "", "lidar_overrides.");
-    if (o["range_noise_std_m"]) w.range_noise_std_m = number(o, "range_noise_std_m", path, 0.0, 1.0);
-    if (o["dropout_probability"]) w.dropout_probability = number(o, "dropout_probability", path, 0.0, 1.0);
+    if (o["range_noise_std_m"]) w.range_noise_std_m = yamlNumberInRange(o, "range_noise_std_m", path, 0.0, 1.0);
+    if (o["dropout_probability"]) w.dropout_probability = yamlNumberInRange(o, "dropout_probability", path, 0.0, 1.0);
   }
   if (const auto c = root["clutter"]) {
     rejectUnknownYamlKeys(c,
@@ -103,12 +86,12 @@ World interpretWorld(const YAML::Node& root, const std::string& path) {
                            "people_per_100m2", "placement_clearance_m"},
                           path, "", "clutter.");
     auto& k = w.clutter;
-    if (c["boxes_per_100m2"]) k.boxes_per_100m2 = number(c, "boxes_per_100m2", path, 0.0, 100.0);
-    if (c["box_min_side_m"]) k.box_min_side_m = number(c, "box_min_side_m", path, 0.01, 10.0);
-    if (c["box_max_side_m"]) k.box_max_side_m = number(c, "box_max_side_m", path, 0.01, 10.0);
-    if (c["pallets_per_100m2"]) k.pallets_per_100m2 = number(c, "pallets_per_100m2", path, 0.0, 100.0);
-    if (c["people_per_100m2"]) k.people_per_100m2 = number(c, "people_per_100m2", path, 0.0, 100.0);
-    if (c["placement_clearance_m"]) k.placement_clearance_m = number(c, "placement_clearance_m", path, 0.0, 10.0);
+    if (c["boxes_per_100m2"]) k.boxes_per_100m2 = yamlNumberInRange(c, "boxes_per_100m2", path, 0.0, 100.0);
+    if (c["box_min_side_m"]) k.box_min_side_m = yamlNumberInRange(c, "box_min_side_m", path, 0.01, 10.0);
+    if (c["box_max_side_m"]) k.box_max_side_m = yamlNumberInRange(c, "box_max_side_m", path, 0.01, 10.0);
+    if (c["pallets_per_100m2"]) k.pallets_per_100m2 = yamlNumberInRange(c, "pallets_per_100m2", path, 0.0, 100.0);
+    if (c["people_per_100m2"]) k.people_per_100m2 = yamlNumberInRange(c, "people_per_100m2", path, 0.0, 100.0);
+    if (c["placement_clearance_m"]) k.placement_clearance_m = yamlNumberInRange(c, "placement_clearance_m", path, 0.0, 10.0);
     if (k.box_min_side_m > k.box_max_side_m) throw InputError(path, "clutter.box_min_side_m > clutter.box_max_side_m");
   }
   if (const auto z = root["trial_start_zone"]) {
