@@ -90,6 +90,11 @@ static int run(int argc, char** argv) {
                  "the N scans before it, each side moved back along the odometry (LookAlikeGuardParams::"
                  "history_updates; 0 = the guard before it, the default)",
                  std::to_string(krp::LookAlikeGuardParams{}.history_updates)},
+                {"guard-recheck-every", "N", "methods with the look-alike guard: while the filter stays converged, "
+                 "the look-alike search runs again every N updates (LookAlikeGuardParams::recheck_every_updates; "
+                 "0 = only when the filter converges afresh). Each search costs a whole-map correlative search: "
+                 "on a large map with a long-range scanner, most of the seeded filter's time",
+                 std::to_string(krp::LookAlikeGuardParams{}.recheck_every_updates)},
                 {"guard-rival-refinements", "N", "methods with the look-alike guard: finer grids, each of half the "
                  "last one's steps, on which the rival test re-fits each side after its 5 cm / 1 deg grid "
                  "(RivalTestParams::finer_refinements; 0 = the test before that parameter)",
@@ -176,6 +181,8 @@ static int run(int argc, char** argv) {
   cfg.path_ambiguity_params.max_places = static_cast<int>(args.integer("path-ambiguity-places"));
   if (cfg.path_ambiguity_params.max_places < 0) throw krp::InputError("--path-ambiguity-places", "must be >= 0");
   cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");
+  cfg.method_settings.guard.recheck_every_updates = static_cast<int>(args.integer("guard-recheck-every"));
+  if (cfg.method_settings.guard.recheck_every_updates < 0) throw krp::InputError("--guard-recheck-every", "must be 0 or more");
   cfg.method_settings.guard.max_search_nodes = args.integer("guard-max-search-nodes");
   if (cfg.method_settings.guard.max_search_nodes < 0) throw krp::InputError("--guard-max-search-nodes", "must be 0 or more");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,

@@ -234,6 +234,10 @@ static int run(int argc, char** argv) {
                  krp::RelocalizerParams{}.stop_turns_once_localized ? "0" : "1"},
                 {"search-zones", "N", "seeded, with --zones: the classifier's most likely zones searched when the "
                  "keypoints give no credible pose (0 = no zone search)", "1"},
+                {"guard-recheck-every", "N", "methods with the look-alike guard (seeded, global-matcher-guarded): while "
+                 "the filter stays converged, its whole-map look-alike search runs again every N updates (0 = only "
+                 "when the filter converges afresh); on a large map with a long-range scanner that search is most of "
+                 "the filter's time", std::to_string(krp::LookAlikeGuardParams{}.recheck_every_updates)},
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"ground-truth", "FILE", "ground truth 'step x y phi' (optional)", ""},
                 {"out-dir", "DIR", "output folder", "out/localize"},
@@ -271,6 +275,9 @@ static int run(int argc, char** argv) {
   if (!s["calibration"].empty())
     krp::useConfidenceCalibration(krp::readConfidenceCalibration(s["calibration"]), ms.relocalizer, ms.matcher);
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
+  const auto recheck = toNumber(s, "guard_recheck_every");
+  if (recheck < 0 || recheck != std::floor(recheck)) throw krp::InputError("--guard-recheck-every", "must be a whole number, 0 or more");
+  ms.guard.recheck_every_updates = static_cast<int>(recheck);
   const bool every_scan = s["single_scan"] == "all";
   const auto single_scan = every_scan ? 0L : static_cast<long>(toNumber(s, "single_scan"));
   const auto stride = static_cast<long>(toNumber(s, "single_scan_stride"));

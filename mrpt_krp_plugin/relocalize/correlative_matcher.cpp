@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <stdexcept>
 
@@ -60,21 +61,57 @@ CorrelativeMatcher::CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& ma
   for (const auto& level : levels_) CV_Assert(level.isContinuous());  // Rotation::linear indexes them
 }
 
-double CorrelativeMatcher::bound(const Rotation& r, int cx, int cy, int level) const {
+namespace {
+/// `sum` as a float no smaller than it, so a stored tail sum still bounds.
+float roundedUp(double sum) {
+  float f = static_cast<float>(sum);
+  if (static_cast<double>(f) < sum) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+}  // namespace
+
+double CorrelativeMatcher::bound(const Rotation& r, int cx, int cy, int level, double cutoff, const float* parent_tail,
+                                 float* tail_out) const {
   ++nodes_scored_;
   const cv::Mat& g = levels_[level];
   const int gx = cx + margin_, gy = cy + margin_;  // the node's cell in the level grids
-  double sum = 0;
+  const size_t n = r.linear.size(), checks = checkpoints(r);
+  const bool stop = params_.stop_bound_early && cutoff != kNoCutoff;
+  if (!params_.stop_bound_early) tail_out = nullptr;
   if (gx + r.min_x >= 0 && gy + r.min_y >= 0 && gx + r.max_x < g.cols && gy + r.max_y < g.rows) {
     const float* robot_cell = g.ptr<float>(gy) + gx;
     // Four running sums: one would make every addition wait for the previous one.
     double part[4] = {0, 0, 0, 0};
-    const size_t n = r.linear.size(), whole = n - n % 4;
-    for (size_t i = 0; i < whole; i += 4)
+    const size_t whole = n - n % 4;
+    size_t i = 0;
+    // The returns not read yet score at most one each, or at most the parent's over the same
+    // returns: once the sum so far plus that cannot beat the cutoff, neither can the node, which
+    // is pruned without reading the rest (most nodes of a search with a high bar end here). The
+    // slack makes rounding (of the sums, of a parent's tail sums) err towards reading on, never
+    // towards pruning a node the full bound would keep.
+    std::array<double, kMaxCheckpoints> read_by{};
+    if (stop || tail_out) {
+      const double needed = cutoff * static_cast<double>(n) - kCutoffSlack;
+      for (size_t k = 0; k < checks; ++k) {
+        for (const size_t end = i + kCutoffCheckEvery; i < end; i += 4)
+          for (size_t j = 0; j < 4; ++j) part[j] += robot_cell[r.linear[i + j]];
+        read_by[k] = (part[0] + part[1]) + (part[2] + part[3]);
+        const double unread = parent_tail ? static_cast<double>(parent_tail[k]) : static_cast<double>(n - i);
+        if (stop && read_by[k] + unread < needed) {
+          ++nodes_stopped_early_;
+          return kPruned;
+        }
+      }
+    }
+    for (; i < whole; i += 4)
       for (size_t j = 0; j < 4; ++j) part[j] += robot_cell[r.linear[i + j]];
-    for (size_t i = whole; i < n; ++i) part[0] += robot_cell[r.linear[i]];
-    return ((part[0] + part[1]) + (part[2] + part[3])) / static_cast<double>(n);
+    for (; i < n; ++i) part[0] += robot_cell[r.linear[i]];
+    const double sum = (part[0] + part[1]) + (part[2] + part[3]);
+    if (tail_out)
+      for (size_t k = 0; k < checks; ++k) tail_out[k] = roundedUp(sum - read_by[k]);
+    return sum / static_cast<double>(n);
   }
+  double sum = 0;
   for (const auto& o : r.offsets) {
     const int x = gx + o.x, y = gy + o.y;
     // A node's window may start left of or below the grid: the part inside still bounds it.
@@ -82,7 +119,19 @@ double CorrelativeMatcher::bound(const Rotation& r, int cx, int cy, int level) c
     if (x + span < 0 || y + span < 0 || x >= g.cols || y >= g.rows) continue;
     sum += g.at<float>(std::max(y, 0), std::max(x, 0));
   }
+  // Near the grid's edge only the plain bound of one per return is kept for the children.
+  if (tail_out)
+    for (size_t k = 0; k < checks; ++k) tail_out[k] = static_cast<float>(n - (k + 1) * kCutoffCheckEvery);
   return sum / static_cast<double>(r.offsets.size());
+}
+
+float* CorrelativeMatcher::reserveTail(const Rotation& r, TailSums& tails, std::int64_t* start) {
+  const size_t checks = checkpoints(r);
+  *start = -1;
+  if (checks == 0) return nullptr;
+  *start = static_cast<std::int64_t>(tails.size());
+  tails.resize(tails.size() + checks);
+  return tails.data() + *start;
 }
 
 cv::Mat CorrelativeMatcher::regionOf(const std::vector<Zone>& zones) const {
@@ -146,6 +195,7 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
                                                      const MatchRequest& request) const {
   const cv::Mat& region = request.region;
   nodes_scored_ = 0;
+  nodes_stopped_early_ = 0;
   cut_short_ = false;
   if (!region.empty() && (region.size() != free_.size() || region.type() != CV_8U))
     throw std::invalid_argument("CorrelativeMatcher::match: region not made by regionOf() for this map");
@@ -190,24 +240,49 @@ mrpt::math::TPose2D CorrelativeMatcher::poseOf(int cx, int cy, double phi) const
   return {x_min_ + (cx + 0.5) * res, y_min_ + (cy + 0.5) * res, phi};
 }
 
-std::vector<CorrelativeMatcher::Node> CorrelativeMatcher::roots(const Rotation& rot, const InRegion& in_region) const {
+std::vector<CorrelativeMatcher::Node> CorrelativeMatcher::roots(const Rotation& rot, const InRegion& in_region,
+                                                                double cutoff, TailSums& tails) const {
   const int top = params_.depth, step = 1 << top;
   std::vector<Node> out;
   for (int cy = 0; cy < free_.rows; cy += step)
-    for (int cx = 0; cx < free_.cols; cx += step)
-      if (in_region(cx, cy, top)) out.push_back({cx, cy, top, bound(rot, cx, cy, top)});
+    for (int cx = 0; cx < free_.cols; cx += step) {
+      if (!in_region(cx, cy, top)) continue;
+      Node node{cx, cy, top, 0.0};
+      float* tail = top > 0 ? reserveTail(rot, tails, &node.tail) : nullptr;
+      node.bound = bound(rot, cx, cy, top, cutoff, nullptr, tail);
+      if (node.bound == kPruned && tail) {
+        tails.resize(static_cast<size_t>(node.tail));  // a pruned node has no children to bound
+        node.tail = -1;
+      }
+      out.push_back(node);
+    }
   return out;
 }
 
-size_t CorrelativeMatcher::children(const Rotation& rot, const Node& n, const InRegion& in_region,
+size_t CorrelativeMatcher::children(const Rotation& rot, const Node& n, const TailSums& n_tails,
+                                    const InRegion& in_region, double cutoff, TailSums& tails,
                                     std::array<Node, 4>& out) const {
-  const int half = 1 << (n.level - 1);
+  // Copied first: `tails` may be `n_tails`, and growing it would move them.
+  std::array<float, kMaxCheckpoints> parent{};
+  const float* parent_tail = nullptr;
+  if (n.tail >= 0) {
+    std::copy_n(n_tails.begin() + n.tail, checkpoints(rot), parent.begin());
+    parent_tail = parent.data();
+  }
+  const int level = n.level - 1, half = 1 << level;
   size_t count = 0;
   for (int dy : {0, half})
     for (int dx : {0, half}) {
       const int cx = n.cx + dx, cy = n.cy + dy;
-      if (cx < free_.cols && cy < free_.rows && in_region(cx, cy, n.level - 1))
-        out[count++] = {cx, cy, n.level - 1, bound(rot, cx, cy, n.level - 1)};
+      if (cx >= free_.cols || cy >= free_.rows || !in_region(cx, cy, level)) continue;
+      Node child{cx, cy, level, 0.0};
+      float* tail = level > 0 ? reserveTail(rot, tails, &child.tail) : nullptr;
+      child.bound = bound(rot, cx, cy, level, cutoff, parent_tail, tail);
+      if (child.bound == kPruned && tail) {
+        tails.resize(static_cast<size_t>(child.tail));
+        child.tail = -1;
+      }
+      out[count++] = child;
     }
   return count;
 }
@@ -218,11 +293,18 @@ std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vec
   MatchSolution best{{}, bar};
   bool found = false;
   const auto higher = [](const Node& a, const Node& b) { return a.bound > b.bound; };
+  // The tail sums of the roots, and of the children of the node being expanded at each level:
+  // depth-first, one node per level is expanded at a time.
+  TailSums root_tails;
+  std::vector<TailSums> child_tails(static_cast<size_t>(std::max(params_.depth, 1)));
   for (const auto& rot : rotations) {
-    auto top = roots(rot, in_region);
+    // Every root's true bound: pruning some would change how the sort orders equal bounds, and
+    // with it which of two equally good places is found first.
+    root_tails.clear();
+    auto top = roots(rot, in_region, kNoCutoff, root_tails);
     std::sort(top.begin(), top.end(), higher);
     // Best child first; a node whose bound cannot beat the best is pruned.
-    const auto visit = [&](const auto& self, const Node& n) -> void {
+    const auto visit = [&](const auto& self, const Node& n, const TailSums& n_tails) -> void {
       if (n.bound <= best.score) return;
       if (n.level == 0) {
         if (!candidate(n.cx, n.cy)) return;
@@ -231,13 +313,17 @@ std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vec
         return;
       }
       std::array<Node, 4> below;
-      const size_t count = children(rot, n, in_region, below);
-      std::sort(below.begin(), below.begin() + count, higher);
-      for (size_t i = 0; i < count; ++i) self(self, below[i]);
+      // Stable, so a pruned child (sorted last, then skipped) leaves the others' order as it was.
+      auto& tails = child_tails[static_cast<size_t>(n.level - 1)];
+      tails.clear();
+      const size_t count = children(rot, n, n_tails, in_region, best.score, tails, below);
+      for (size_t i = 1; i < count; ++i)
+        for (size_t j = i; j > 0 && higher(below[j], below[j - 1]); --j) std::swap(below[j], below[j - 1]);
+      for (size_t i = 0; i < count; ++i) self(self, below[i], tails);
     };
     for (const auto& r : top) {
       if (r.bound <= best.score) break;
-      visit(visit, r);
+      visit(visit, r, root_tails);
     }
   }
   if (!found) return std::nullopt;
@@ -264,8 +350,9 @@ std::optional<MatchSolution> CorrelativeMatcher::searchBestFirst(const std::vect
   // The best charged candidate so far: nothing that cannot beat it needs charging or expanding.
   std::optional<Entry> best;
   const auto floor = [&] { return best ? best->key : bar; };
+  TailSums tails;  // of every node queued, for its children's bounds
   for (size_t k = 0; k < rotations.size(); ++k)
-    for (const auto& r : roots(rotations[k], in_region))
+    for (const auto& r : roots(rotations[k], in_region, bar, tails))
       if (r.bound > bar) queue.push({r.bound, static_cast<int>(k), r, false});
   const auto solution = [&](const Entry& e) {
     return MatchSolution{poseOf(e.node.cx, e.node.cy, rotations[e.rotation].phi), e.key};
@@ -293,7 +380,7 @@ std::optional<MatchSolution> CorrelativeMatcher::searchBestFirst(const std::vect
       continue;
     }
     std::array<Node, 4> below;
-    const size_t count = children(rot, n, in_region, below);
+    const size_t count = children(rot, n, tails, in_region, floor(), tails, below);
     for (size_t i = 0; i < count; ++i)
       if (below[i].bound > floor()) queue.push({below[i].bound, e.rotation, below[i], false});
   }

@@ -6,8 +6,11 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <opencv2/core.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -30,6 +33,10 @@ struct CorrelativeMatcherParams {
   /// that a scan whose returns reach no farther outside is bounded without edge checks. Costs
   /// memory: (width + 2 margin) x (height + 2 margin) x (depth + 1) floats [m].
   double margin_m = 15.0;
+  /// A node's bound stops reading returns once it cannot beat what the search must beat (no
+  /// return scores above 1). The answers and the nodes scored are the same either way; false
+  /// reads every return, for the side-by-side benchmark (krp-bench-matcher).
+  bool stop_bound_early = true;
 };
 
 /// What one match() looks for; every field left empty keeps the parameters' choice.
@@ -89,6 +96,8 @@ class CorrelativeMatcher {
 
   /// Nodes whose bound was computed in the last match() (a measure of its cost).
   long long lastNodesScored() const { return nodes_scored_; }
+  /// Of those, the ones whose bound stopped early (CorrelativeMatcherParams::stop_bound_early).
+  long long lastNodesStoppedEarly() const { return nodes_stopped_early_; }
   /// The last match() ran out of MatchRequest::max_nodes_scored: its answer may not be the best.
   bool lastSearchCutShort() const { return cut_short_; }
   const CorrelativeMatcherParams& params() const { return params_; }
@@ -106,16 +115,26 @@ class CorrelativeMatcher {
   struct Node {
     int cx, cy, level;
     double bound;  ///< no candidate in the node's window scores more
+    /// Where the node's tail sums start in the search's TailSums (-1: none kept). A child's window
+    /// lies inside its parent's, so on every return it scores at most what the parent does, and
+    /// the parent's sum over the returns not yet read bounds the child's far tighter than one per
+    /// return: the child's bound can stop after far fewer returns.
+    std::int64_t tail = -1;
   };
+  /// Tail sums of the nodes a search keeps: at each checkpoint, the node's sum over the returns
+  /// after it (rounded up to float, so still a bound).
+  using TailSums = std::vector<float>;
   using InRegion = std::function<bool(int cx, int cy, int level)>;
   using Candidate = std::function<bool(int cx, int cy)>;  ///< a cell a solution may stand on
   using LeafPenalty = std::function<double(const mrpt::math::TPose2D& pose, double enough)>;
 
-  /// The coarsest nodes over the search grid that hold any of the region, bounded for `rot`.
-  std::vector<Node> roots(const Rotation& rot, const InRegion& in_region) const;
-  /// `n`'s children (up to four) inside the grid and the region, bounded for `rot`, written to
-  /// `out`; how many.
-  size_t children(const Rotation& rot, const Node& n, const InRegion& in_region, std::array<Node, 4>& out) const;
+  /// The coarsest nodes over the search grid that hold any of the region, bounded for `rot`
+  /// (those that cannot beat `cutoff` marked kPruned).
+  std::vector<Node> roots(const Rotation& rot, const InRegion& in_region, double cutoff, TailSums& tails) const;
+  /// `n`'s children (up to four) inside the grid and the region, bounded for `rot` as roots()
+  /// does, written to `out`; how many.
+  size_t children(const Rotation& rot, const Node& n, const TailSums& n_tails, const InRegion& in_region, double cutoff,
+                  TailSums& tails, std::array<Node, 4>& out) const;
   /// The best candidate scoring above `bar`: depth-first, best child first, pruned by the best
   /// found so far (fast when nothing is charged beyond the endpoint score).
   std::optional<MatchSolution> searchDepthFirst(const std::vector<Rotation>& rotations, double bar,
@@ -128,7 +147,24 @@ class CorrelativeMatcher {
   /// The scan's returns in the robot frame, evenly decimated to max_points.
   std::vector<mrpt::math::TPoint2D> returns(const mrpt::obs::CObservation2DRangeScan& scan) const;
   Rotation rotate(const std::vector<mrpt::math::TPoint2D>& points, double phi) const;
-  double bound(const Rotation& r, int cx, int cy, int level) const;
+  /// The node's bound: no candidate in its window scores more. When it cannot exceed `cutoff`,
+  /// kPruned instead (found without reading every return; the caller drops the node either way).
+  /// `parent_tail`: the tail sums of a node whose window holds this one's (null: none). With
+  /// `tail_out` (checkpoints(r) floats), the node's own tail sums are written there unless pruned.
+  double bound(const Rotation& r, int cx, int cy, int level, double cutoff = kNoCutoff,
+               const float* parent_tail = nullptr, float* tail_out = nullptr) const;
+  /// Checkpoints of a bound over `r`'s returns (one every kCutoffCheckEvery returns, at most kMaxCheckpoints).
+  static size_t checkpoints(const Rotation& r) { return std::min(r.linear.size() / kCutoffCheckEvery, kMaxCheckpoints); }
+  /// A new node's tail sums go to the end of `tails`: where they start, and room for them.
+  static float* reserveTail(const Rotation& r, TailSums& tails, std::int64_t* start);
+  static constexpr double kNoCutoff = -std::numeric_limits<double>::infinity();
+  static constexpr double kPruned = -std::numeric_limits<double>::infinity();
+  /// Returns gathered between two checks against the cutoff (a multiple of 4, the running sums).
+  static constexpr size_t kCutoffCheckEvery = 16;
+  /// Checkpoints kept per node (returns past the last are read without checks).
+  static constexpr size_t kMaxCheckpoints = 64;
+  /// Margin on the cutoff test, far above the rounding of a sum of a few hundred scores in [0, 1].
+  static constexpr double kCutoffSlack = 1e-9;
   bool robotCellFree(int cx, int cy) const { return free_.at<uint8_t>(cy, cx) != 0; }
 
   CorrelativeMatcherParams params_;
@@ -139,6 +175,7 @@ class CorrelativeMatcher {
   cv::Mat free_;                 ///< CV_8U, robot may stand here
   double x_min_ = 0, y_min_ = 0;
   mutable long long nodes_scored_ = 0;
+  mutable long long nodes_stopped_early_ = 0;
   mutable bool cut_short_ = false;
 };
 

@@ -46,6 +46,7 @@ TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
   EXPECT_EQ(doc["look_alike_rival_refinements"].as<int>(), d.look_alike_rival_refinements);
   EXPECT_EQ(doc["look_alike_max_search_nodes"].as<int>(), d.look_alike_max_search_nodes);
   EXPECT_EQ(doc["look_alike_history_updates"].as<int>(), d.look_alike_history_updates);
+  EXPECT_EQ(doc["look_alike_recheck_every_updates"].as<int>(), d.look_alike_recheck_every_updates);
   EXPECT_DOUBLE_EQ(doc["transform_tolerance_s"].as<double>(), d.transform_tolerance_s);
   EXPECT_DOUBLE_EQ(doc["transform_timeout_s"].as<double>(), d.transform_timeout_s);
   EXPECT_EQ(doc["global_frame"].as<std::string>(), d.global_frame);
@@ -66,7 +67,8 @@ TEST(RosNodeParams, TheFilterGetsTheSeeThroughSwitchAndTheKidnapDetector) {
 }
 
 // What the node hands its look-alike guard: the see-through charges of its search and of its
-// rival test's re-fit and its finer grids, the search's node budget and the scan history.
+// rival test's re-fit and its finer grids, the search's node budget, how often it searches again
+// and the scan history.
 TEST(RosNodeParams, TheGuardGetsTheChargeSwitchesAndItsBudget) {
   NodeParams p;
   EXPECT_TRUE(p.lookAlikeGuard().search_charges_see_through);
@@ -74,7 +76,9 @@ TEST(RosNodeParams, TheGuardGetsTheChargeSwitchesAndItsBudget) {
   EXPECT_EQ(p.lookAlikeGuard().max_search_nodes, LookAlikeGuardParams{}.max_search_nodes);
   EXPECT_EQ(p.lookAlikeGuard().rival_test.finer_refinements, RivalTestParams{}.finer_refinements);
   EXPECT_EQ(p.lookAlikeGuard().history_updates, 0);
+  EXPECT_EQ(p.lookAlikeGuard().recheck_every_updates, LookAlikeGuardParams{}.recheck_every_updates);
   p.look_alike_history_updates = 10;
+  p.look_alike_recheck_every_updates = 5;
   p.look_alike_search_charges_see_through = false;
   p.look_alike_refit_charges_see_through = false;
   p.look_alike_rival_refinements = 0;
@@ -85,6 +89,7 @@ TEST(RosNodeParams, TheGuardGetsTheChargeSwitchesAndItsBudget) {
   EXPECT_EQ(g.rival_test.finer_refinements, 0);
   EXPECT_EQ(g.max_search_nodes, 0);
   EXPECT_EQ(g.history_updates, 10);
+  EXPECT_EQ(g.recheck_every_updates, 5);
 }
 
 TEST(RosNodeParams, TheTurnAndZoneSearchSettingsReachTheLearnedRelocalizer) {

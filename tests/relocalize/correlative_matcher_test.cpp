@@ -4,6 +4,7 @@
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
@@ -226,6 +227,44 @@ TEST(CorrelativeMatcher, ChargedBranchAndBoundFindsWhatExhaustiveChargedSearchFi
   EXPECT_GT(uncharged[0].score, sb[0].score);
 }
 
+// A bound that stops reading returns once its node cannot beat what the search must beat changes
+// the cost, not the search: every kind of search gives the same answers, scores and node counts
+// with it as without it, and it does stop early on most of a high-bar search's nodes.
+TEST(CorrelativeMatcher, ABoundThatStopsEarlyChangesTheCostNotTheSearch) {
+  const auto room = test::asymmetricRoom();
+  CorrelativeMatcherParams reading_all;
+  reading_all.stop_bound_early = false;
+  CorrelativeMatcherParams stopping = reading_all;
+  stopping.stop_bound_early = true;
+  const CorrelativeMatcher all(room, reading_all), early(room, stopping);
+  const auto scan = scanAt(room, mrpt::poses::CPose2D(2.0, 4.5, -2.2));
+  MatchRequest high_bar;
+  high_bar.min_score = all.scoreAt(*scan, {2.0, 4.5, -2.2}) - 0.3;
+  MatchRequest charged = high_bar;
+  charged.leaf_penalty = [](const mrpt::math::TPose2D& p, double) { return 0.1 * (1.0 + std::sin(3.0 * p.x + 2.0 * p.y)); };
+  const MatchRequest whole_map;
+  long long stopped_on_high_bar = 0;
+  for (const MatchRequest* request : std::array<const MatchRequest*, 3>{&whole_map, &high_bar, &charged}) {
+    const auto a = all.match(*scan, *request);
+    const auto b = early.match(*scan, *request);
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_FALSE(a.empty());
+    for (size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].score, b[i].score);
+      EXPECT_EQ(a[i].pose.x, b[i].pose.x);
+      EXPECT_EQ(a[i].pose.y, b[i].pose.y);
+      EXPECT_EQ(a[i].pose.phi, b[i].pose.phi);
+    }
+    EXPECT_EQ(all.lastNodesScored(), early.lastNodesScored());
+    EXPECT_EQ(all.lastNodesStoppedEarly(), 0);
+    EXPECT_LE(early.lastNodesStoppedEarly(), early.lastNodesScored());
+    if (request != &whole_map) stopped_on_high_bar += early.lastNodesStoppedEarly();
+  }
+  EXPECT_GT(stopped_on_high_bar, 0) << "a high bar should let some bounds stop early";
+  // scoreAt reads every return whatever the setting: it is a score, not a bound to beat.
+  EXPECT_EQ(all.scoreAt(*scan, {1.0, 1.0, 0.5}), early.scoreAt(*scan, {1.0, 1.0, 0.5}));
+}
+
 // A search out of its node budget answers with the best place it charged, which is no better
 // than the exact answer, and says that it was cut short; a negative charge is refused.
 TEST(CorrelativeMatcher, AChargedSearchOutOfBudgetSaysSoAndANegativeChargeIsRefused) {
@@ -243,7 +282,9 @@ TEST(CorrelativeMatcher, AChargedSearchOutOfBudgetSaysSoAndANegativeChargeIsRefu
   const auto cut = matcher.match(*scan, charging);
   EXPECT_TRUE(matcher.lastSearchCutShort());
   EXPECT_LE(matcher.lastNodesScored(), nodes / 2 + 4) << "stops within one expansion of the budget";
-  if (!cut.empty()) EXPECT_LE(cut[0].score, exact[0].score);
+  if (!cut.empty()) {
+    EXPECT_LE(cut[0].score, exact[0].score);
+  }
   charging.max_nodes_scored = 0;
   charging.leaf_penalty = [](const mrpt::math::TPose2D&, double) { return -0.1; };
   EXPECT_THROW(matcher.match(*scan, charging), std::invalid_argument);
