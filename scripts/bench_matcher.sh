@@ -22,19 +22,10 @@ if [[ ! -f "$log" ]]; then
   echo "bench_matcher: $log not found: the Freiburg 101 map is left out" >&2
   exit 0
 fi
-work=out/bench_matcher_freiburg_101  # the map and profile, kept for a look (out/ is not committed)
+work=out/bench_matcher_freiburg_101  # the map and the guard runs, kept for a look (out/ is not committed)
 mkdir -p "$work"
 "$bin/krp-map-from-log" --carmen "$log" --first 1 --every 2 --out "$work/freiburg_101_odd_scans.yaml"
-# The log's PARAM lines: 360 beams over 180 deg, 80.99 m, mounted 4 cm behind the centre.
-cat > "$work/sick_lms_freiburg.yaml" <<YAML
-fov_deg: 180
-beams: 360
-max_range_m: 80.99
-range_noise_std_m: 0.01
-dropout_probability: 0.01
-mount_x_m: -0.04
-YAML
-"$bin/krp-bench-matcher" --map "$work/freiburg_101_odd_scans.yaml" --lidar "$work/sick_lms_freiburg.yaml" \
+"$bin/krp-bench-matcher" --map "$work/freiburg_101_odd_scans.yaml" --lidar scripts/sick_lms_freiburg.yaml \
   --scans "$scans" --seed 1 --out "$out/freiburg_101"
 
 # How often the guard searches, on the real log: the guarded filter over the whole log with the

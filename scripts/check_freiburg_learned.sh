@@ -28,16 +28,7 @@ map_cmd=("$bin/krp-map-from-log" --carmen "$log" --first 1 --every 2 --out "$map
 [[ -f "$map" ]] || "${map_cmd[@]}" | tee "$keep/map.txt"
 
 profile="$keep/sick_lms_freiburg.yaml"
-cat > "$profile" <<YAML
-# The Freiburg 101 robot's front SICK LMS, from the log: FLASER lines of 360 beams over 180 deg,
-# PARAM robot_front_laser_max 80.99, robot_frontlaser_offset -0.04.
-fov_deg: 180
-beams: 360
-max_range_m: 80.99
-range_noise_std_m: 0.01
-dropout_probability: 0.01
-mount_x_m: -0.04
-YAML
+cp scripts/sick_lms_freiburg.yaml "$profile"  # the scanner, from the log's PARAM lines
 
 train_cmd=(scripts/krp-train-map --map "$map" --lidar "$profile" --samples-per-zone "${SAMPLES_PER_ZONE:-1000}"
            --out "$models")
