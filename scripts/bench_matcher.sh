@@ -36,8 +36,8 @@ recheck="$out/freiburg_101/GUARD_RECHECK.md"
   echo
   echo "Made by scripts/bench_matcher.sh; one run after the other on one machine."
   echo
-  echo "| --guard-recheck-every | localization CPU | converged | updates to convergence | median error | poses identical to every update |"
-  echo "|---|---|---|---|---|---|"
+  echo "| --guard-recheck-every | localization CPU | look-alike searches, their CPU | converged | updates to convergence | median error | poses identical to every update |"
+  echo "|---|---|---|---|---|---|---|"
 } > "$recheck"
 for every in 1 3 5; do
   run="$work/guard_recheck_$every"
@@ -47,7 +47,8 @@ for every in 1 3 5; do
   field() { sed -n "s/^$1: //p" "$run/krp_localize_SUMMARY.txt"; }
   same=yes
   cmp -s <(cut -d, -f1-4 "$work/guard_recheck_1/poses.csv") <(cut -d, -f1-4 "$run/poses.csv") || same=no
-  echo "| $every | $(field 'localization CPU') | $(field converged) | $(field 'updates to convergence') | $(field 'median error') | $same |" >> "$recheck"
+  searches="$(sed -n 's/^look-alike searches: \([0-9]*\), \([^ ]*\) s of that CPU.*/\1, \2 s/p' "$run/krp_localize_SUMMARY.txt")"
+  echo "| $every | $(field 'localization CPU') | $searches | $(field converged) | $(field 'updates to convergence') | $(field 'median error') | $same |" >> "$recheck"
 done
 echo >> "$recheck"
 echo "Command (N = 1, 3, 5): \`${cmd[*]}\`" | sed "s/--guard-recheck-every 5/--guard-recheck-every N/; s/guard_recheck_5/guard_recheck_N/" >> "$recheck"

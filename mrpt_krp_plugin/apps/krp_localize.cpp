@@ -327,17 +327,23 @@ static int run(int argc, char** argv) {
   if (krp::methodUsesLookAlikeGuard(s["method"])) loc.setLookAlikeGuard(krp::makeLookAlikeGuard(*map.grid, ms));
 
   std::ostringstream csv;
-  csv << "step,x_m,y_m,phi_rad,std_xy_m,std_phi_deg,ambiguous,scan_unexplained,particles,cpu_s"
+  csv << "step,x_m,y_m,phi_rad,std_xy_m,std_phi_deg,ambiguous,scan_unexplained,particles,cpu_s,look_alike_searches,"
+         "look_alike_search_cpu_s"
       << (truth.empty() ? "" : ",error_xy_m,error_phi_deg")
       << "\n";
   std::vector<krp::UpdateRecord> records;
   krp::MclEstimate e;
+  int searches = 0;
+  double search_cpu = 0.0;
   for (size_t i = 0; i < steps.size(); ++i) {
     e = loc.update(steps[i]);
+    searches += e.look_alike_searches;
+    search_cpu += e.look_alike_search_cpu_s;
     const auto r = krp::makeUpdateRecord(e, truth.empty() ? e.mean : truth[i], 0.0);
     records.push_back(r);
     csv << i << "," << e.mean.x << "," << e.mean.y << "," << e.mean.phi << "," << r.spread.xy_std_m << "," << r.spread.phi_std_deg << ","
-        << r.ambiguous << "," << r.scan_unexplained << "," << e.particles << "," << e.cpu_s;
+        << r.ambiguous << "," << r.scan_unexplained << "," << e.particles << "," << e.cpu_s << "," << e.look_alike_searches << ","
+        << e.look_alike_search_cpu_s;
     if (!truth.empty()) csv << "," << r.error_xy_m << "," << r.error_phi_deg;
     csv << "\n";
   }
@@ -358,6 +364,9 @@ static int run(int argc, char** argv) {
   double cpu = 0;
   for (const auto& r : records) cpu += r.cpu_s;
   sum << "localization CPU: " << cpu << " s\n";
+  if (krp::methodUsesLookAlikeGuard(s["method"]))
+    sum << "look-alike searches: " << searches << ", " << search_cpu << " s of that CPU (every "
+        << ms.guard.recheck_every_updates << " update(s) while converged; --guard-recheck-every spaces them out)\n";
   if (!truth.empty()) {
     const auto o = krp::evaluateTrial(records, krp::ConvergenceCriteria{});
     std::vector<double> errs;

@@ -199,7 +199,10 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
   for (int search = 0; search < searches; ++search) {
     std::vector<mrpt::math::TPoint2D> excluded;
     for (const auto& test : rejected_) excluded.emplace_back(test.rival().x, test.rival().y);
+    const double t0 = threadCpuSeconds();
     const auto found = guard_->lookAlike(scan, mean, excluded, see_through);
+    search_cpu_this_update_ += threadCpuSeconds() - t0;
+    ++searches_this_update_;
     if (!found) return false;
     // A place that fits at least as well at a fresh convergence gets particles at once. Later,
     // and for places that fit a little worse, the scans that follow decide first: moving
@@ -219,6 +222,8 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
 MclEstimate MclLocalizer::update(const RawlogStep& step) {
   const double t0 = threadCpuSeconds();
   MclEstimate e;
+  searches_this_update_ = 0;
+  search_cpu_this_update_ = 0.0;
   if (!initialized_) {
     reseedMrptGlobalRandom(params_.seed + static_cast<uint32_t>(initializations_));
     init_->initialize(pf_, filter_.m_options, *map_, *step.observations);
@@ -276,6 +281,8 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     if (e.kidnap_detected) initialized_ = false;
   }
   e.particles = pf_.size();
+  e.look_alike_searches = searches_this_update_;
+  e.look_alike_search_cpu_s = search_cpu_this_update_;
   e.cpu_s = threadCpuSeconds() - t0;
   return e;
 }

@@ -51,6 +51,11 @@ struct MclEstimate {
   /// ambiguity_margin) and the scans since have not yet told the two apart (RivalTest): the
   /// mean is one of two candidates, not yet a pose to drive on.
   std::optional<mrpt::math::TPose2D> ambiguous_with;
+  /// Whole-map look-alike searches the guard ran in this update, and their thread CPU time (part
+  /// of cpu_s) [s]: on a large map with a long-range scanner most of the filter's cost, which
+  /// LookAlikeGuardParams::recheck_every_updates trades against how soon a look-alike is seen.
+  int look_alike_searches = 0;
+  double look_alike_search_cpu_s = 0.0;
 };
 
 /// MRPT's CMonteCarloLocalization2D driven step by step, with the start chosen by a
@@ -134,6 +139,8 @@ class MclLocalizer {
   std::shared_ptr<const LookAlikeGuard> guard_;
   bool converged_ = false;              ///< the particles were concentrated at the last update
   int updates_since_check_ = 0;         ///< converged updates since the guard last searched
+  int searches_this_update_ = 0;        ///< MclEstimate::look_alike_searches, counted as they run
+  double search_cpu_this_update_ = 0.0;  ///< MclEstimate::look_alike_search_cpu_s, likewise [s]
   std::optional<RivalTest> rival_;      ///< a look-alike being weighed against the mean
   std::deque<RivalTest> rejected_;      ///< look-alikes the scans decided against, moved by odometry
   ScanHistory history_;                 ///< earlier scans a new look-alike is weighed on (guard's history_updates)

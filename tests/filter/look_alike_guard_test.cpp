@@ -7,6 +7,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 
 #include <cmath>
+#include <vector>
 
 #include "mrpt_krp_plugin/bench/method_registry.h"
 #include "mrpt_krp_plugin/common/random.h"
@@ -404,6 +405,39 @@ TEST(LookAlikeGuard, RefusesNoSearchPerUpdate) {
   LookAlikeGuardParams p;
   p.searches_per_update = 0;
   EXPECT_THROW(LookAlikeGuard(std::make_shared<CorrelativeMatcher>(test::asymmetricRoom()), p), std::invalid_argument);
+}
+
+// A right filter with no look-alike within the margin: the guard searches at the fresh
+// convergence and then every recheck_every_updates updates (0: never again), and each update
+// reports the searches it ran and their CPU, which is part of the update's.
+TEST(LookAlikeGuard, SearchesAsOftenAsTheRecheckIntervalSaysAndReportsTheirCost) {
+  const auto room = std::make_shared<mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  const auto matcher = std::make_shared<CorrelativeMatcher>(*room);
+  auto searches = [&](int recheck_every) {
+    auto params = withAmbiguityMargin(0.0);
+    params.recheck_every_updates = recheck_every;
+    MclLocalizer loc(room, std::make_shared<OnePoseInitializer>(kTruth));
+    loc.setLookAlikeGuard(std::make_shared<LookAlikeGuard>(matcher, params));
+    std::vector<int> per_update;
+    for (uint64_t i = 0; i < 7; ++i) {
+      const auto e = loc.update(stepWithScan(scanAtTruth(*room, 40 + i)));
+      per_update.push_back(e.look_alike_searches);
+      EXPECT_GE(e.look_alike_search_cpu_s, 0.0);
+      EXPECT_LE(e.look_alike_search_cpu_s, e.cpu_s);
+      if (e.look_alike_searches == 0) {
+        EXPECT_EQ(e.look_alike_search_cpu_s, 0.0);
+      } else {
+        EXPECT_GT(e.look_alike_search_cpu_s, 0.0);
+      }
+    }
+    return per_update;
+  };
+  EXPECT_EQ(searches(1), (std::vector<int>{1, 1, 1, 1, 1, 1, 1}));
+  EXPECT_EQ(searches(3), (std::vector<int>{1, 0, 0, 1, 0, 0, 1}));
+  EXPECT_EQ(searches(0), (std::vector<int>{1, 0, 0, 0, 0, 0, 0}));
+  // Without a guard nothing is searched.
+  MclLocalizer unguarded(room, std::make_shared<OnePoseInitializer>(kTruth));
+  EXPECT_EQ(unguarded.update(stepWithScan(scanAtTruth(*room, 40))).look_alike_searches, 0);
 }
 
 }  // namespace
