@@ -16,6 +16,7 @@
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
+#include "guard_cost_note.h"
 #include "ros_conversions.h"
 
 namespace krp::ros1 {
@@ -393,6 +394,16 @@ void RelocalizerNode::track(TrackJob& job) {
     return;
   }
   if (!u) return;
+  const double scan_interval_s = last_track_stamp_.isZero() ? 0.0 : (job.stamp - last_track_stamp_).toSec();
+  last_track_stamp_ = job.stamp;
+  const auto cost = guardCostNote(u->estimate.look_alike_search_cpu_s, u->estimate.look_alike_searches, scan_interval_s,
+                                  params_.look_alike_recheck_every_updates);
+  const ros::WallTime now = ros::WallTime::now();
+  // Its numbers change every update, so report()'s repeat filter would let every one through.
+  if (cost && (last_guard_note_time_.isZero() || (now - last_guard_note_time_).toSec() >= kProblemLogPeriodS)) {
+    last_guard_note_time_ = now;
+    report(*cost, true);
+  }
   const OccupancyMap& map = *job.state->map;
   if (u->estimate.initialized && job.state->seeding->lastSeeding()) {
     const auto& seeding = *job.state->seeding->lastSeeding();

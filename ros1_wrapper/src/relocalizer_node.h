@@ -104,6 +104,8 @@ class RelocalizerNode {
 
   // Track mode: the filter runs on its own thread.
   std::atomic<bool> reinitialize_tracker_{false};
+  ros::Time last_track_stamp_;          ///< the track worker's previous scan (its thread only)
+  ros::WallTime last_guard_note_time_;  ///< when the guard's cost was last reported (its thread only)
   std::unique_ptr<LatestOnlyWorker<TrackJob>> track_worker_;
 };
 

@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace krp::ros1 {
+
+/// What the track-mode node says when the look-alike guard's searches in one filter update took
+/// longer than the time between that scan and the one before: the node keeps only the newest
+/// scan, so scans are skipped while the guard searches (on a large map with a long-range scanner
+/// one search costs tens of ms). Nothing when they fit in the interval, or when the interval is
+/// unknown (not positive). `recheck_every_updates` is the node's current setting, named in the
+/// advice.
+std::optional<std::string> guardCostNote(double search_cpu_s, int searches, double scan_interval_s,
+                                         int recheck_every_updates);
+
+}  // namespace krp::ros1
