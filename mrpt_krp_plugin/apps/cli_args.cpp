@@ -77,6 +77,12 @@ long long CliArgs::integer(const std::string& name) const {
   return static_cast<long long>(v);
 }
 
+uint64_t CliArgs::seed(const std::string& name) const {
+  const long long v = integer(name);
+  if (v < 0) throw InputError("--" + name, "'" + get(name) + "' is negative; seeds are >= 0");
+  return static_cast<uint64_t>(v);
+}
+
 std::vector<std::string> CliArgs::list(const std::string& name) const {
   std::vector<std::string> out;
   std::stringstream ss(get(name));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -28,6 +29,8 @@ class CliArgs {
   bool flag(const std::string& name) const;
   double number(const std::string& name) const;
   long long integer(const std::string& name) const;
+  /// A seed: a whole number, 0 or more (a negative one would wrap to another seed unnoticed).
+  uint64_t seed(const std::string& name) const;
   std::vector<std::string> list(const std::string& name) const;  ///< comma-separated
   std::vector<long long> integerList(const std::string& name) const;  ///< comma-separated integers
   std::string usage() const;

@@ -133,7 +133,7 @@ static int run(int argc, char** argv) {
   cfg.mcl.kidnap.enabled = args.flag("kidnap-detection");
   if (cfg.kidnap_at_step < 0 || cfg.kidnap_at_step > cfg.trial.steps)
     throw krp::InputError("--kidnap-at", "must be in 0.." + std::to_string(cfg.trial.steps) + " (the trial's steps)");
-  cfg.seed = static_cast<uint64_t>(args.integer("seed"));
+  cfg.seed = args.seed("seed");
   cfg.method_settings.uniform.particles = static_cast<size_t>(args.integer("uniform-particles"));
   cfg.method_settings.uniform.particles_per_m2 = args.number("uniform-particles-per-m2");
   cfg.method_settings.amcl.max_particles = static_cast<size_t>(args.integer("kld-max"));

@@ -40,7 +40,7 @@ static int run(int argc, char** argv) {
   krp::MatcherSpeedParams params;
   params.scans = static_cast<int>(args.integer("scans"));
   if (params.scans < 1) throw krp::InputError("--scans", "must be at least 1");
-  params.seed = static_cast<uint64_t>(args.integer("seed"));
+  params.seed = args.seed("seed");
   const krp::MethodSettings settings;  // the matcher and guard as every method runs them
   params.matcher = settings.relocalizer.matcher;
   params.guard = settings.guard;

@@ -98,13 +98,8 @@ static int run(int argc, char** argv) {
   p.submap.orientation = krp::parseOrientation(args.get("orientation"), "--orientation");
   p.sdt.clip_m = args.number("sdt-clip-m");
   p.split.block_m = args.number("block-m");
-  const auto seed_option = [&args](const std::string& name) {
-    const long long v = args.integer(name);
-    if (v < 0) throw krp::InputError("--" + name, "'" + args.get(name) + "' is negative; seeds are >= 0");
-    return static_cast<uint64_t>(v);
-  };
-  p.seed = seed_option("seed");
-  p.split.seed = args.has("split-seed") ? seed_option("split-seed") : p.seed;
+  p.seed = args.seed("seed");
+  p.split.seed = args.has("split-seed") ? args.seed("split-seed") : p.seed;
   std::cerr << "krp-dataset: world " << world.name << ", lidar " << in.lidar.name << ", " << in.zones.size()
             << " zones, seed " << p.seed << ", submap " << p.submap.size_m << " m / " << p.submap.size_px << " px, "
             << krp::orientationName(p.submap.orientation) << "\n";

@@ -3,10 +3,12 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -35,6 +37,12 @@ using krp::apps::CliArgs;
 
 namespace {
 constexpr char kSection[] = "localize";
+// Upper ends of the whole-number settings, far above any sensible value, so that a typo (an
+// extra zero or three) is refused rather than run for hours.
+constexpr long long kMaxParticles = 10'000'000;
+constexpr long long kMaxZones = 1000;
+constexpr long long kMaxRecheckEvery = 1000;
+constexpr long long kMaxStep = std::numeric_limits<int>::max();
 
 // The flag that gives an INI key on the command line: the same name with '-' for '_'.
 std::string flagName(std::string key) {
@@ -87,6 +95,19 @@ double toNumber(const std::map<std::string, std::string>& s, const std::string& 
   } catch (const std::exception&) {
   }
   throw krp::InputError(key, "'" + s.at(key) + "' is not a number");
+}
+
+/// A setting that must be a whole number in [lo, hi]: a count or an index, never cast from a
+/// fraction or a negative (a negative particle count would wrap to billions).
+long long toWholeNumber(const std::map<std::string, std::string>& s, const std::string& key, long long lo, long long hi) {
+  const double v = toNumber(s, key);
+  if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi)) {
+    std::string flag = key;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    throw krp::InputError("--" + flag, "'" + s.at(key) + "' must be a whole number from " + std::to_string(lo) + " to " +
+                                           std::to_string(hi));
+  }
+  return static_cast<long long>(v);
 }
 
 // What --single-scan relocalizes with: the learned models, or the global matcher when the
@@ -255,33 +276,26 @@ static int run(int argc, char** argv) {
   if (truth_from_log && (s["carmen"].empty() || !s["ground_truth"].empty()))
     throw krp::InputError("--truth-from-log", "needs --carmen and no --ground-truth");
 
+  const auto filter_seed = static_cast<uint32_t>(toWholeNumber(s, "seed", 0, std::numeric_limits<uint32_t>::max()));
   krp::MethodSettings ms;
-  ms.uniform.particles = static_cast<size_t>(toNumber(s, "uniform_particles"));
+  ms.uniform.particles = static_cast<size_t>(toWholeNumber(s, "uniform_particles", 0, kMaxParticles));
   ms.uniform.particles_per_m2 = toNumber(s, "uniform_particles_per_m2");
-  ms.amcl.max_particles = static_cast<size_t>(toNumber(s, "kld_max"));
-  ms.amcl.min_particles = static_cast<size_t>(toNumber(s, "kld_min"));
-  ms.relocalizer.top_zones = static_cast<int>(toNumber(s, "top_zones"));
-  const auto top_turns = toNumber(s, "top_turns");
-  if (top_turns < 1 || top_turns > 4 || top_turns != std::floor(top_turns))
-    throw krp::InputError("--top-turns", "must be a whole number from 1 to 4");
-  ms.relocalizer.top_turns = static_cast<int>(top_turns);
+  ms.amcl.max_particles = static_cast<size_t>(toWholeNumber(s, "kld_max", 1, kMaxParticles));
+  ms.amcl.min_particles = static_cast<size_t>(toWholeNumber(s, "kld_min", 1, kMaxParticles));
+  ms.relocalizer.top_zones = static_cast<int>(toWholeNumber(s, "top_zones", 0, kMaxZones));
+  ms.relocalizer.top_turns = static_cast<int>(toWholeNumber(s, "top_turns", 1, 4));
   const auto every_turn = toNumber(s, "keypoints_every_turn");
   if (every_turn != 0 && every_turn != 1) throw krp::InputError("--keypoints-every-turn", "must be 0 or 1");
   ms.relocalizer.stop_turns_once_localized = every_turn == 0;
-  const auto search_zones = toNumber(s, "search_zones");
-  if (search_zones < 0) throw krp::InputError("--search-zones", "must be 0 or more");
-  ms.relocalizer.zone_search.zones = static_cast<int>(search_zones);
+  ms.relocalizer.zone_search.zones = static_cast<int>(toWholeNumber(s, "search_zones", 0, kMaxZones));
   krp::useMinLocalizedFitFraction(toNumber(s, "min_localized_fit"), ms.relocalizer, ms.matcher);
   if (!s["calibration"].empty())
     krp::useConfidenceCalibration(krp::readConfidenceCalibration(s["calibration"]), ms.relocalizer, ms.matcher);
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
-  const auto recheck = toNumber(s, "guard_recheck_every");
-  if (recheck < 0 || recheck != std::floor(recheck)) throw krp::InputError("--guard-recheck-every", "must be a whole number, 0 or more");
-  ms.guard.recheck_every_updates = static_cast<int>(recheck);
+  ms.guard.recheck_every_updates = static_cast<int>(toWholeNumber(s, "guard_recheck_every", 0, kMaxRecheckEvery));
   const bool every_scan = s["single_scan"] == "all";
-  const auto single_scan = every_scan ? 0L : static_cast<long>(toNumber(s, "single_scan"));
-  const auto stride = static_cast<long>(toNumber(s, "single_scan_stride"));
-  if (stride < 1) throw krp::InputError("--single-scan-stride", "must be at least 1");
+  const auto single_scan = every_scan ? 0L : static_cast<long>(toWholeNumber(s, "single_scan", -1, kMaxStep));
+  const auto stride = static_cast<long>(toWholeNumber(s, "single_scan_stride", 1, kMaxStep));
   const bool single_scan_mode = every_scan || single_scan >= 0;
   const bool use_matcher = krp::methodNeedsMatcher(s["method"]);
   const auto map = krp::loadOccupancyMap(s["map"]);
@@ -321,7 +335,7 @@ static int run(int argc, char** argv) {
   }
   auto init = krp::makeInitializer(s["method"], ms, resources);
   krp::MclParams mp;
-  mp.seed = static_cast<uint32_t>(toNumber(s, "seed"));
+  mp.seed = filter_seed;
   mp.see_through.enabled = krp::methodUsesSeeThrough(s["method"]);
   krp::MclLocalizer loc(map.grid, init, mp);
   if (krp::methodUsesLookAlikeGuard(s["method"])) loc.setLookAlikeGuard(krp::makeLookAlikeGuard(*map.grid, ms));

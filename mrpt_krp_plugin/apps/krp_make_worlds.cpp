@@ -22,7 +22,7 @@ static int run(int argc, char** argv) {
                 {"seed", "N", "generator seed", "1"}});
   if (!args.parse(argc, argv)) return 0;
   for (const auto& name : args.list("worlds")) {
-    const auto built = krp::buildWorld(name, static_cast<uint64_t>(args.integer("seed")));
+    const auto built = krp::buildWorld(name, args.seed("seed"));
     const fs::path dir = fs::path(args.get("out")) / name;
     krp::validateZones(built.map, built.zones, name + " (generated)");
     krp::writeRosMap(built.map, (dir / (name + ".yaml")).string());

@@ -36,7 +36,7 @@ static int run(int argc, char** argv) {
   krp::ThesisComparisonParams params;
   params.references_per_zone = static_cast<int>(args.integer("references"));
   params.tests_per_zone = static_cast<int>(args.integer("tests"));
-  params.seed = static_cast<uint64_t>(args.integer("seed"));
+  params.seed = args.seed("seed");
   params.clutter = !args.flag("no-clutter");
   const auto comparison = krp::runThesisComparison(world, lidar, models, params, std::cerr);
   const std::string out = args.get("out");
