@@ -21,6 +21,8 @@ UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& t
   r.scan_unexplained = e.scan_unexplained;
   r.particles = e.particles;
   r.cpu_s = e.cpu_s;
+  r.look_alike_searches = e.look_alike_searches;
+  r.look_alike_search_cpu_s = e.look_alike_search_cpu_s;
   r.distance_m = distance_m;
   r.kidnap_detected = e.kidnap_detected;
   return r;
@@ -38,6 +40,8 @@ TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& u, const Convergence
   for (const auto& r : u) {
     sum_particles += static_cast<double>(r.particles);
     o.total_cpu_s += r.cpu_s;
+    o.look_alike_searches += r.look_alike_searches;
+    o.look_alike_search_cpu_s += r.look_alike_search_cpu_s;
   }
   o.mean_particles = sum_particles / static_cast<double>(u.size());
   if (first >= 0) {

@@ -34,6 +34,8 @@ struct UpdateRecord {
   bool scan_unexplained = false;  ///< the guard widened the covariance for too few explained returns
   std::size_t particles = 0;
   double cpu_s = 0.0;
+  int look_alike_searches = 0;          ///< MclEstimate::look_alike_searches
+  double look_alike_search_cpu_s = 0.0;  ///< their CPU, part of cpu_s [s]
   double distance_m = 0.0;   ///< true distance travelled up to this update [m]
   bool kidnap_detected = false;  ///< the filter's kidnap detector fired at this update
 };
@@ -54,6 +56,8 @@ struct TrialOutcome {
   bool confident_but_wrong = false;  ///< at the last update: spread small, pose outside tolerance
   bool confident_and_right = false;  ///< at the last update: spread small, pose within tolerance
   double total_cpu_s = 0.0;
+  int look_alike_searches = 0;          ///< the guard's whole-map searches over the trial
+  double look_alike_search_cpu_s = 0.0;  ///< their CPU, part of total_cpu_s [s]
 };
 
 TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& updates, const ConvergenceCriteria& criteria);

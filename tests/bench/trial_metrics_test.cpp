@@ -38,6 +38,19 @@ TEST(TrialMetrics, ConvergenceMustHoldAtEveryLaterUpdate) {
   EXPECT_FALSE(o.confident_but_wrong);
 }
 
+TEST(TrialMetrics, TheGuardsSearchesAddUpOverTheTrial) {
+  std::vector<UpdateRecord> u = {rec(5, 90, 3, 1000, 0.1, 0), rec(0.1, 1, 0.05, 300, 0.2, 0.2),
+                                 rec(0.05, 1, 0.05, 200, 0.3, 0.4)};
+  u[1].look_alike_searches = 1;
+  u[1].look_alike_search_cpu_s = 0.15;
+  u[2].look_alike_searches = 3;
+  u[2].look_alike_search_cpu_s = 0.25;
+  const auto o = evaluateTrial(u, {});
+  EXPECT_EQ(o.look_alike_searches, 4);
+  EXPECT_NEAR(o.look_alike_search_cpu_s, 0.4, 1e-12);
+  EXPECT_NEAR(o.total_cpu_s, 0.6, 1e-12);
+}
+
 TEST(TrialMetrics, ConfidentButWrongIsSmallSpreadWithWrongPose) {
   const auto wrong_tight = evaluateTrial({rec(5, 3, 3, 100, 1, 0), rec(12, 180, 0.1, 100, 1, 0.2)}, {});
   EXPECT_FALSE(wrong_tight.converged);
@@ -66,7 +79,11 @@ TEST(TrialMetrics, UpdateRecordFromEstimate) {
   e.cov(1, 1) = 0.01;
   e.cov(2, 2) = std::pow(5.0 * M_PI / 180.0, 2);
   e.particles = 42;
+  e.look_alike_searches = 2;
+  e.look_alike_search_cpu_s = 0.03;
   const auto r = makeUpdateRecord(e, {1.3, 2.4, 0.1 + M_PI / 18}, 1.5);
+  EXPECT_EQ(r.look_alike_searches, 2);
+  EXPECT_EQ(r.look_alike_search_cpu_s, 0.03);
   EXPECT_NEAR(r.error_xy_m, 0.5, 1e-9);
   EXPECT_NEAR(r.error_phi_deg, 10.0, 1e-9);
   EXPECT_NEAR(r.spread.xy_std_m, 0.2, 1e-9);
