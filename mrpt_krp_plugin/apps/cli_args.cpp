@@ -77,6 +77,14 @@ long long CliArgs::integer(const std::string& name) const {
   return static_cast<long long>(v);
 }
 
+long long CliArgs::integerInRange(const std::string& name, long long lo, long long hi) const {
+  const long long v = integer(name);
+  if (v < lo || v > hi)
+    throw InputError("--" + name, "'" + get(name) + "' must be a whole number from " + std::to_string(lo) + " to " +
+                                      std::to_string(hi));
+  return v;
+}
+
 uint64_t CliArgs::seed(const std::string& name) const {
   const long long v = integer(name);
   if (v < 0) throw InputError("--" + name, "'" + get(name) + "' is negative; seeds are >= 0");

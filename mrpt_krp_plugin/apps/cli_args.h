@@ -8,6 +8,11 @@
 
 namespace krp::apps {
 
+// Upper ends of the apps' count settings, far above any sensible value, so that a typo (an extra
+// zero or three) is refused rather than run for hours.
+constexpr long long kMaxParticles = 10'000'000;
+constexpr long long kMaxZones = 1000;
+
 /// `--key value` / `--flag` parsing with a declared set of options, so a mistyped flag is
 /// an error with the usage text rather than silently ignored.
 class CliArgs {
@@ -29,6 +34,8 @@ class CliArgs {
   bool flag(const std::string& name) const;
   double number(const std::string& name) const;
   long long integer(const std::string& name) const;
+  /// A whole number from lo to hi (a count: a negative one must not wrap to billions).
+  long long integerInRange(const std::string& name, long long lo, long long hi) const;
   /// A seed: a whole number, 0 or more (a negative one would wrap to another seed unnoticed).
   uint64_t seed(const std::string& name) const;
   std::vector<std::string> list(const std::string& name) const;  ///< comma-separated

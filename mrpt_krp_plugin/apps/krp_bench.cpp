@@ -16,6 +16,8 @@
 
 namespace fs = std::filesystem;
 using krp::apps::CliArgs;
+using krp::apps::kMaxParticles;
+using krp::apps::kMaxZones;
 
 static std::string methodList() {
   std::string s;
@@ -134,11 +136,11 @@ static int run(int argc, char** argv) {
   if (cfg.kidnap_at_step < 0 || cfg.kidnap_at_step > cfg.trial.steps)
     throw krp::InputError("--kidnap-at", "must be in 0.." + std::to_string(cfg.trial.steps) + " (the trial's steps)");
   cfg.seed = args.seed("seed");
-  cfg.method_settings.uniform.particles = static_cast<size_t>(args.integer("uniform-particles"));
+  cfg.method_settings.uniform.particles = static_cast<size_t>(args.integerInRange("uniform-particles", 0, kMaxParticles));
   cfg.method_settings.uniform.particles_per_m2 = args.number("uniform-particles-per-m2");
-  cfg.method_settings.amcl.max_particles = static_cast<size_t>(args.integer("kld-max"));
-  cfg.method_settings.amcl.min_particles = static_cast<size_t>(args.integer("kld-min"));
-  cfg.method_settings.amcl_high_max_particles = static_cast<size_t>(args.integer("kld-high-max"));
+  cfg.method_settings.amcl.max_particles = static_cast<size_t>(args.integerInRange("kld-max", 1, kMaxParticles));
+  cfg.method_settings.amcl.min_particles = static_cast<size_t>(args.integerInRange("kld-min", 1, kMaxParticles));
+  cfg.method_settings.amcl_high_max_particles = static_cast<size_t>(args.integerInRange("kld-high-max", 1, kMaxParticles));
   cfg.method_settings.models_root = args.get("models-root");
   for (const auto& pair : args.list("models-for")) {
     const auto eq = pair.find('=');
@@ -152,7 +154,7 @@ static int run(int argc, char** argv) {
     if (args.integer(flag) < 1) throw krp::InputError(std::string("--") + flag, "must be 1 or more");
   cfg.method_settings.seeded.particles_per_hypothesis = static_cast<size_t>(args.integer("seeded-particles-per-hypothesis"));
   cfg.method_settings.seeded.min_particles = static_cast<size_t>(args.integer("seeded-min-particles"));
-  cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integer("top-zones"));
+  cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integerInRange("top-zones", 0, kMaxZones));
   const auto top_turns = args.integer("top-turns");
   if (top_turns < 1 || top_turns > 4) throw krp::InputError("--top-turns", "must be 1 to 4");
   cfg.method_settings.relocalizer.top_turns = static_cast<int>(top_turns);

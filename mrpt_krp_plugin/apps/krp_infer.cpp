@@ -39,6 +39,8 @@ json detectionsJson(const std::vector<krp::PoseDetection>& dets) {
 }
 
 constexpr double kP90 = 0.9;
+/// The most --latency runs: a million runs of the keypoint model is hours already.
+constexpr long long kMaxLatencyRuns = 1'000'000;
 
 // Median and 90th percentile of `runs` timed calls, after `warmup` untimed ones.
 template <typename F>
@@ -80,7 +82,7 @@ static int run(int argc, char** argv) {
   decode.score_threshold = static_cast<float>(args.number("conf"));
   decode.iou_threshold = static_cast<float>(args.number("iou"));
 
-  const int runs = static_cast<int>(args.integer("latency"));
+  const int runs = static_cast<int>(args.integerInRange("latency", 0, kMaxLatencyRuns));
   if (runs > 0) {
     // Measured on a real submap image when one is given, else on an all-unknown one: the cost of
     // these networks does not depend on the pixel values.

@@ -37,10 +37,9 @@ using krp::apps::CliArgs;
 
 namespace {
 constexpr char kSection[] = "localize";
-// Upper ends of the whole-number settings, far above any sensible value, so that a typo (an
-// extra zero or three) is refused rather than run for hours.
-constexpr long long kMaxParticles = 10'000'000;
-constexpr long long kMaxZones = 1000;
+using krp::apps::kMaxParticles;
+using krp::apps::kMaxZones;
+// The largest --guard-recheck-every: beyond it, 0 (never while converged) says it.
 constexpr long long kMaxRecheckEvery = 1000;
 constexpr long long kMaxStep = std::numeric_limits<int>::max();
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <sstream>
+#include <string>
 #include <opencv2/imgproc.hpp>
 
 #include "mrpt_krp_plugin/common/input_error.h"
@@ -179,6 +181,14 @@ int dropTiny(cv::Mat& labels, int n, double min_cells) {
 }  // namespace
 
 std::vector<Zone> autoZone(const mrpt::maps::COccupancyGridMap2D& grid, const AutoZoningParams& p) {
+  // A zero or negative target would zone as if it were tiny; the factors scale it.
+  if (!(p.target_area_m2 > 0.0) || !std::isfinite(p.target_area_m2)) {
+    std::ostringstream got;
+    got << p.target_area_m2;
+    throw InputError("auto-zoning", "target area must be a positive number of m^2, got " + got.str());
+  }
+  if (!(p.split_above_factor > p.merge_below_factor) || !(p.merge_below_factor >= 0.0))
+    throw InputError("auto-zoning", "split_above_factor must exceed merge_below_factor, which must be 0 or more");
   const double res = grid.getResolution();
   const double cell_area = res * res;
   cv::Mat free = freeMask(grid, p.cells);

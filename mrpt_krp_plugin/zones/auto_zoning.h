@@ -26,7 +26,8 @@ struct AutoZoningParams {
 };
 
 /// Partitions the free space. Zones are named zone_00, zone_01, ... ordered top-left first.
-/// Throws InputError if the map has no free space to zone.
+/// Throws InputError if the map has no free space to zone, or for a target area that is not a
+/// positive number (or factors that would merge what they split).
 std::vector<Zone> autoZone(const mrpt::maps::COccupancyGridMap2D& grid, const AutoZoningParams& params = {});
 
 }  // namespace krp

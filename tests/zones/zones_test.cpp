@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
@@ -105,6 +106,22 @@ TEST(AutoZoning, EnclosedRoomsAndTinyPocketsStillGiveValidZones) {
   for (const auto& s : problems) all += s + "; ";
   EXPECT_TRUE(problems.empty()) << all;
   EXPECT_GE(zones.size(), 2u);
+}
+
+TEST(AutoZoning, RefusesATargetAreaThatIsNotPositive) {
+  mrpt::maps::COccupancyGridMap2D g(0, 10, 0, 10, 0.1);
+  g.fill(1.0f);
+  drawWallBox(g, 0.05, 0.05, 9.9, 9.9);
+  AutoZoningParams p;
+  for (const double bad : {0.0, -3.0, std::nan("")}) {
+    p.target_area_m2 = bad;
+    EXPECT_THROW(autoZone(g, p), InputError) << bad;
+  }
+  p.target_area_m2 = 20.0;
+  p.merge_below_factor = 2.0;  // above the split factor: would merge what it splits
+  EXPECT_THROW(autoZone(g, p), InputError);
+  p.merge_below_factor = AutoZoningParams{}.merge_below_factor;
+  EXPECT_FALSE(autoZone(g, p).empty());
 }
 
 TEST(AutoZoning, LargeFloorGetsAtLeastTwelveValidZones) {
