@@ -94,7 +94,9 @@ static int run(int argc, char** argv) {
   p.changed_samples_per_zone = static_cast<int>(args.integer("changed-per-zone"));
   p.scenario.strength = args.number("strength");
   p.submap = krp::submapParamsForLidar(in.lidar, static_cast<int>(args.integer("size-px")));
-  if (args.number("size-m") > 0) p.submap.size_m = args.number("size-m");
+  const double size_m = args.number("size-m");
+  if (size_m < 0) throw krp::InputError("--size-m", "'" + args.get("size-m") + "' is negative (0 = sized for the lidar)");
+  if (size_m > 0) p.submap.size_m = size_m;
   p.submap.orientation = krp::parseOrientation(args.get("orientation"), "--orientation");
   p.sdt.clip_m = args.number("sdt-clip-m");
   p.split.block_m = args.number("block-m");

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/dataset/dataset_generator.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -65,6 +66,10 @@ DatasetCard generateDataset(const DatasetInputs& in, const DatasetParams& p, con
                                               std::to_string(in.zones.size()));
   if (p.samples_per_zone < 1 || p.changed_samples_per_zone < 0 || p.world_variants < 1)
     throw InputError("dataset parameters", "samples_per_zone >= 1, changed_samples_per_zone >= 0, world_variants >= 1");
+  if (!(p.split.block_m > 0.0) || !std::isfinite(p.split.block_m))
+    throw InputError("dataset parameters", "the split's block_m must be a positive number of metres");
+  if (!(p.scenario.strength >= 0.0) || !std::isfinite(p.scenario.strength))
+    throw InputError("dataset parameters", "scenario strength must be 0 (off) or more");
   validateSubmapParams(p.submap);
   if (fs::exists(out_dir)) throw InputError(out_dir, "already exists; choose a new folder or remove it first");
   const fs::path partial = out_dir + ".partial";

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -157,6 +158,25 @@ TEST(DatasetGenerator, WritesSplitsLabelsCardAndIsReproducible) {
   EXPECT_EQ(readAll(fs::path(dir) / "a/keypoints/images/changed/z00_00031.png"),
             readAll(fs::path(dir) / "b/keypoints/images/changed/z00_00031.png"));
   EXPECT_THROW(generateDataset(in, p, dir + "/a", progress), InputError);
+}
+
+TEST(DatasetGenerator, RefusesASplitOrScenarioThatMakesNoSenseAndWritesNothing) {
+  const auto world = buildOfficeTwoZone(1);
+  const auto in = officeInputs(world, 4);
+  const auto dir = test::tempDir("dataset_bad_params");
+  std::ostringstream progress;
+  for (const double block_m : {0.0, -2.0, std::nan("")}) {
+    DatasetParams p;
+    p.split.block_m = block_m;
+    EXPECT_THROW(generateDataset(in, p, dir + "/x", progress), InputError) << block_m;
+  }
+  for (const double strength : {-1.0, std::nan("")}) {
+    DatasetParams p;
+    p.scenario.strength = strength;
+    EXPECT_THROW(generateDataset(in, p, dir + "/x", progress), InputError) << strength;
+  }
+  EXPECT_FALSE(fs::exists(fs::path(dir) / "x"));
+  EXPECT_FALSE(fs::exists(fs::path(dir) / "x.partial"));
 }
 
 // Fresh samples for trained models: another sampling seed, the models' split seed. Every sample
