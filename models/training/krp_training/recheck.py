@@ -20,6 +20,7 @@ import yaml
 from tqdm import tqdm
 
 from . import keypoint_error, manifest as manifest_io, train_keypoints, zone_border
+from .cli_help import DefaultsHelpFormatter
 from .image_folders import read_split
 from .recheck_report import write_report
 
@@ -42,7 +43,7 @@ class RecheckError(Exception):
 
 def parse_args(argv):
     p = argparse.ArgumentParser(prog="krp-recheck-models", description=__doc__.splitlines()[0],
-                                formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+                                formatter_class=DefaultsHelpFormatter)
     p.add_argument("--models", required=True, type=Path, help="a krp-train-map model folder (manifest.json)")
     p.add_argument("--seed", required=True, type=int, help="sampling seed of the fresh data (not the training seed)")
     p.add_argument("--map", type=Path, help="the map file, for models trained with --map (default: the sim world "

@@ -20,6 +20,7 @@ import yaml
 from . import (classifier_models, export, keypoint_error, machine_speed, manifest, plots, report, train_classifier,
                train_keypoints, zone_border)
 from .augment import AugmentParams, max_rotation_deg
+from .cli_help import DefaultsHelpFormatter
 from .image_folders import SPLITS, read_split
 from .stage_timer import StageTimer, duration
 
@@ -37,9 +38,15 @@ REFERENCE_PROBE_S = 0.049
 KEYPOINT_TRAIN_IMAGES = 600
 
 
+# The smallest value each whole-number option takes, checked before any work starts: a bad one
+# would otherwise surface only after the dataset (minutes) or the classifier (tens of minutes).
+_MINIMUM = {"samples_per_zone": 1, "changed_per_zone": 0, "classifier_epochs": 1, "keypoint_epochs": 1,
+            "keypoint_train_images": 0, "seed": 0}
+
+
 def parse_args(argv):
     p = argparse.ArgumentParser(prog="krp-train-map", description=__doc__.splitlines()[0],
-                                formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+                                formatter_class=DefaultsHelpFormatter)
     src = p.add_mutually_exclusive_group(required=True)
     src.add_argument("--world", help="a sim world name under sim_worlds/ or a *.world.yaml")
     src.add_argument("--map", help="a map file (ROS map .yaml, .gridmap, OctoMap .bt/.ot)")
@@ -51,7 +58,8 @@ def parse_args(argv):
     p.add_argument("--work-dir", help="dataset and training runs (default: out/train/<name>)")
     p.add_argument("--samples-per-zone", type=int, default=4000,
                    help="poses per zone; the classifier trains on all, the keypoint model on a subset")
-    p.add_argument("--changed-per-zone", type=int, default=150)
+    p.add_argument("--changed-per-zone", type=int, default=150,
+                   help="poses per zone of the changed-environment test split (heavier clutter, moved furniture)")
     p.add_argument("--strength", type=float, default=1.0, help="scenario generation strength (0 = off)")
     p.add_argument("--classifier", default="compact", choices=classifier_models.ARCHITECTURES)
     p.add_argument("--classifier-epochs", type=int, default=15)
@@ -67,6 +75,11 @@ def parse_args(argv):
     p.add_argument("--bin-dir", default=str(DEFAULT_BIN_DIR), help="where the built C++ apps are")
     p.add_argument("--keep-work", action="store_true", help="keep the dataset and runs after success")
     args = p.parse_args(argv)
+    for name, least in _MINIMUM.items():
+        if getattr(args, name) < least:
+            p.error(f"--{name.replace('_', '-')} must be {least} or more, not {getattr(args, name)}")
+    if not args.strength >= 0:
+        p.error(f"--strength must be >= 0 (0 = off), not {args.strength}")
     if not args.keypoint_loss_sigma >= 0:  # refused now, not after the dataset and the classifier
         p.error(f"--keypoint-loss-sigma must be >= 0 (0 = ultralytics' default), not {args.keypoint_loss_sigma}")
     return args

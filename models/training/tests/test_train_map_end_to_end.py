@@ -90,6 +90,29 @@ def test_a_negative_keypoint_loss_sigma_is_refused_before_any_work(tmp_path, bin
     assert not (tmp_path / "work").exists() and not (tmp_path / "m.partial").exists()
 
 
+@pytest.mark.parametrize("flag, value, says", [
+    ("--classifier-epochs", "0", "--classifier-epochs must be 1 or more, not 0"),
+    ("--samples-per-zone", "-5", "--samples-per-zone must be 1 or more, not -5"),
+    ("--keypoint-train-images", "-1", "--keypoint-train-images must be 0 or more, not -1"),
+    ("--seed", "-2", "--seed must be 0 or more, not -2"),
+    ("--strength", "-0.5", "--strength must be >= 0 (0 = off), not -0.5"),
+])
+def test_a_bad_count_is_refused_before_any_work(tmp_path, bin_dir, capsys, flag, value, says):
+    with pytest.raises(SystemExit):
+        train_map.main(["--world", "office_two_zone", "--out", str(tmp_path / "m"), "--work-dir",
+                        str(tmp_path / "work"), flag, value, "--bin-dir", str(bin_dir)])
+    assert says in capsys.readouterr().err
+    assert not (tmp_path / "work").exists() and not (tmp_path / "m.partial").exists()
+
+
+def test_the_help_shows_no_empty_defaults(capsys):
+    with pytest.raises(SystemExit):
+        train_map.parse_args(["--help"])
+    text = capsys.readouterr().out
+    assert "(default: None)" not in text
+    assert "(default: 4000)" in text
+
+
 def test_a_map_file_without_zones_is_zoned_and_trained(tmp_path, bin_dir):
     """A new user's path: a map file only (no world, no zones), so the zones are made automatically."""
     map_file = train_map.REPO_ROOT / "sim_worlds" / "office_two_zone" / "office_two_zone.yaml"
