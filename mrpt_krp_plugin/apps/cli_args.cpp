@@ -77,12 +77,15 @@ long long CliArgs::integer(const std::string& name) const {
   return static_cast<long long>(v);
 }
 
-long long CliArgs::integerInRange(const std::string& name, long long lo, long long hi) const {
-  const long long v = integer(name);
-  if (v < lo || v > hi)
-    throw InputError("--" + name, "'" + get(name) + "' must be a whole number from " + std::to_string(lo) + " to " +
+long long wholeNumberInRange(const std::string& flag, const std::string& text, double value, long long lo, long long hi) {
+  if (value != std::floor(value) || value < static_cast<double>(lo) || value > static_cast<double>(hi))
+    throw InputError("--" + flag, "'" + text + "' must be a whole number from " + std::to_string(lo) + " to " +
                                       std::to_string(hi));
-  return v;
+  return static_cast<long long>(value);
+}
+
+long long CliArgs::integerInRange(const std::string& name, long long lo, long long hi) const {
+  return wholeNumberInRange(name, get(name), number(name), lo, hi);
 }
 
 uint64_t CliArgs::seed(const std::string& name) const {

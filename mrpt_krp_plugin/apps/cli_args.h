@@ -13,6 +13,10 @@ namespace krp::apps {
 constexpr long long kMaxParticles = 10'000'000;
 constexpr long long kMaxZones = 1000;
 
+/// `value`, given as `text` for `--flag`, as a whole number from lo to hi; InputError naming the
+/// flag and the range otherwise. CliArgs::integerInRange and INI-read settings share it.
+long long wholeNumberInRange(const std::string& flag, const std::string& text, double value, long long lo, long long hi);
+
 /// `--key value` / `--flag` parsing with a declared set of options, so a mistyped flag is
 /// an error with the usage text rather than silently ignored.
 class CliArgs {

@@ -183,8 +183,8 @@ static int run(int argc, char** argv) {
   cfg.path_ambiguity_params.max_places = static_cast<int>(args.integer("path-ambiguity-places"));
   if (cfg.path_ambiguity_params.max_places < 0) throw krp::InputError("--path-ambiguity-places", "must be >= 0");
   cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");
-  cfg.method_settings.guard.recheck_every_updates = static_cast<int>(args.integer("guard-recheck-every"));
-  if (cfg.method_settings.guard.recheck_every_updates < 0) throw krp::InputError("--guard-recheck-every", "must be 0 or more");
+  cfg.method_settings.guard.recheck_every_updates = static_cast<int>(
+      args.integerInRange("guard-recheck-every", 0, krp::LookAlikeGuardParams::kMaxRecheckEveryUpdates));
   cfg.method_settings.guard.max_search_nodes = args.integer("guard-max-search-nodes");
   if (cfg.method_settings.guard.max_search_nodes < 0) throw krp::InputError("--guard-max-search-nodes", "must be 0 or more");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,

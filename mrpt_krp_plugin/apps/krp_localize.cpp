@@ -39,8 +39,6 @@ namespace {
 constexpr char kSection[] = "localize";
 using krp::apps::kMaxParticles;
 using krp::apps::kMaxZones;
-// The largest --guard-recheck-every: beyond it, 0 (never while converged) says it.
-constexpr long long kMaxRecheckEvery = 1000;
 constexpr long long kMaxStep = std::numeric_limits<int>::max();
 
 // The flag that gives an INI key on the command line: the same name with '-' for '_'.
@@ -99,14 +97,7 @@ double toNumber(const std::map<std::string, std::string>& s, const std::string& 
 /// A setting that must be a whole number in [lo, hi]: a count or an index, never cast from a
 /// fraction or a negative (a negative particle count would wrap to billions).
 long long toWholeNumber(const std::map<std::string, std::string>& s, const std::string& key, long long lo, long long hi) {
-  const double v = toNumber(s, key);
-  if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi)) {
-    std::string flag = key;
-    std::replace(flag.begin(), flag.end(), '_', '-');
-    throw krp::InputError("--" + flag, "'" + s.at(key) + "' must be a whole number from " + std::to_string(lo) + " to " +
-                                           std::to_string(hi));
-  }
-  return static_cast<long long>(v);
+  return krp::apps::wholeNumberInRange(flagName(key), s.at(key), toNumber(s, key), lo, hi);
 }
 
 // What --single-scan relocalizes with: the learned models, or the global matcher when the
@@ -291,7 +282,7 @@ static int run(int argc, char** argv) {
   if (!s["calibration"].empty())
     krp::useConfidenceCalibration(krp::readConfidenceCalibration(s["calibration"]), ms.relocalizer, ms.matcher);
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
-  ms.guard.recheck_every_updates = static_cast<int>(toWholeNumber(s, "guard_recheck_every", 0, kMaxRecheckEvery));
+  ms.guard.recheck_every_updates = static_cast<int>(toWholeNumber(s, "guard_recheck_every", 0, krp::LookAlikeGuardParams::kMaxRecheckEveryUpdates));
   const bool every_scan = s["single_scan"] == "all";
   const auto single_scan = every_scan ? 0L : static_cast<long>(toWholeNumber(s, "single_scan", -1, kMaxStep));
   const auto stride = static_cast<long>(toWholeNumber(s, "single_scan_stride", 1, kMaxStep));
@@ -346,12 +337,8 @@ static int run(int argc, char** argv) {
       << "\n";
   std::vector<krp::UpdateRecord> records;
   krp::MclEstimate e;
-  int searches = 0;
-  double search_cpu = 0.0;
   for (size_t i = 0; i < steps.size(); ++i) {
     e = loc.update(steps[i]);
-    searches += e.look_alike_searches;
-    search_cpu += e.look_alike_search_cpu_s;
     const auto r = krp::makeUpdateRecord(e, truth.empty() ? e.mean : truth[i], 0.0);
     records.push_back(r);
     csv << i << "," << e.mean.x << "," << e.mean.y << "," << e.mean.phi << "," << r.spread.xy_std_m << "," << r.spread.phi_std_deg << ","
@@ -374,8 +361,13 @@ static int run(int argc, char** argv) {
   if (e.scan_unexplained)
     sum << "unsettled: the map explains only " << e.fit_fraction
         << " of the last scan's returns (clutter?); the std above is widened\n";
-  double cpu = 0;
-  for (const auto& r : records) cpu += r.cpu_s;
+  double cpu = 0, search_cpu = 0;
+  int searches = 0;
+  for (const auto& r : records) {
+    cpu += r.cpu_s;
+    search_cpu += r.look_alike_search_cpu_s;
+    searches += r.look_alike_searches;
+  }
   sum << "localization CPU: " << cpu << " s\n";
   if (krp::methodUsesLookAlikeGuard(s["method"]))
     sum << "look-alike searches: " << searches << ", " << search_cpu << " s of that CPU (every "

@@ -21,6 +21,9 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
     throw std::invalid_argument("LookAlikeGuard: ambiguity_margin must be at least score_margin");
   if (params_.recheck_every_updates < 0 || params_.remembered_rejected < 0)
     throw std::invalid_argument("LookAlikeGuard: recheck_every_updates and remembered_rejected must be 0 or more");
+  if (params_.recheck_every_updates > LookAlikeGuardParams::kMaxRecheckEveryUpdates)
+    throw std::invalid_argument("LookAlikeGuard: recheck_every_updates must be at most " +
+                                std::to_string(LookAlikeGuardParams::kMaxRecheckEveryUpdates));
   if (params_.history_updates < 0) throw std::invalid_argument("LookAlikeGuard: history_updates must be 0 or more");
   if (params_.max_search_nodes < 0) throw std::invalid_argument("LookAlikeGuard: max_search_nodes must be 0 or more");
   if (params_.searches_per_update < 1) throw std::invalid_argument("LookAlikeGuard: searches_per_update must be at least 1");

@@ -41,6 +41,8 @@ struct LookAlikeGuardParams {
   /// While converged and no rival is under test, the search is repeated every this many updates
   /// (a look-alike can appear as the robot moves). 0: only at each fresh convergence.
   int recheck_every_updates = 1;
+  /// The largest recheck_every_updates accepted: beyond it, 0 (never while converged) says it.
+  static constexpr int kMaxRecheckEveryUpdates = 1000;
   /// Look-alikes weighed in one update at most, the one under test included: a look-alike
   /// decided against (by its test ending, or at once on the scan it was found with) is excluded
   /// and the search repeated, so that the estimate is reported unambiguous only when no

@@ -28,8 +28,6 @@ constexpr int kMaxSearchZones = 10000;
 // Each stored scan is replayed for every new look-alike: beyond this the replay costs more than a
 // second's worth of updates.
 constexpr int kMaxHistoryUpdates = 50;
-/// The largest look_alike_recheck_every_updates accepted: beyond it, 0 (never while converged) says it.
-constexpr int kMaxRecheckEveryUpdates = 1000;
 
 /// One parameter: how to read it from its XML-RPC value into NodeParams.
 using Reader = std::function<void(NodeParams&, XmlRpcValue&, const std::string& key)>;
@@ -113,7 +111,8 @@ const std::map<std::string, Reader>& readers() {
       {"look_alike_rival_refinements", integer(&NodeParams::look_alike_rival_refinements, 0, kMaxRivalRefinements)},
       {"look_alike_max_search_nodes", integer(&NodeParams::look_alike_max_search_nodes, 0, kMaxSearchNodes)},
       {"look_alike_history_updates", integer(&NodeParams::look_alike_history_updates, 0, kMaxHistoryUpdates)},
-      {"look_alike_recheck_every_updates", integer(&NodeParams::look_alike_recheck_every_updates, 0, kMaxRecheckEveryUpdates)},
+      {"look_alike_recheck_every_updates", integer(&NodeParams::look_alike_recheck_every_updates, 0,
+                                                           LookAlikeGuardParams::kMaxRecheckEveryUpdates)},
   };
   return r;
 }

@@ -398,11 +398,13 @@ void RelocalizerNode::track(TrackJob& job) {
   last_track_stamp_ = job.stamp;
   const auto cost = guardCostNote(u->estimate.look_alike_search_cpu_s, u->estimate.look_alike_searches, scan_interval_s,
                                   params_.look_alike_recheck_every_updates);
-  const ros::WallTime now = ros::WallTime::now();
-  // Its numbers change every update, so report()'s repeat filter would let every one through.
-  if (cost && (last_guard_note_time_.isZero() || (now - last_guard_note_time_).toSec() >= kProblemLogPeriodS)) {
-    last_guard_note_time_ = now;
-    report(*cost, true);
+  if (cost) {
+    // Its numbers change every update, so report()'s repeat filter would let every one through.
+    const ros::WallTime now = ros::WallTime::now();
+    if (last_guard_note_time_.isZero() || (now - last_guard_note_time_).toSec() >= kProblemLogPeriodS) {
+      last_guard_note_time_ = now;
+      report(*cost, true);
+    }
   }
   const OccupancyMap& map = *job.state->map;
   if (u->estimate.initialized && job.state->seeding->lastSeeding()) {

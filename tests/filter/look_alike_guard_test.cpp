@@ -401,6 +401,17 @@ TEST(LookAlikeGuard, RefusesANegativeHistory) {
   EXPECT_NO_THROW(LookAlikeGuard(std::make_shared<CorrelativeMatcher>(test::asymmetricRoom()), p));
 }
 
+TEST(LookAlikeGuard, RefusesARecheckIntervalOutsideItsRange) {
+  const auto matcher = std::make_shared<CorrelativeMatcher>(test::asymmetricRoom());
+  LookAlikeGuardParams p;
+  p.recheck_every_updates = -1;
+  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
+  p.recheck_every_updates = LookAlikeGuardParams::kMaxRecheckEveryUpdates + 1;
+  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
+  p.recheck_every_updates = LookAlikeGuardParams::kMaxRecheckEveryUpdates;
+  EXPECT_NO_THROW(LookAlikeGuard(matcher, p));
+}
+
 TEST(LookAlikeGuard, RefusesNoSearchPerUpdate) {
   LookAlikeGuardParams p;
   p.searches_per_update = 0;
