@@ -89,7 +89,7 @@ double CorrelativeMatcher::bound(const Rotation& r, int cx, int cy, int level, d
     // is pruned without reading the rest (most nodes of a search with a high bar end here). The
     // slack makes rounding (of the sums, of a parent's tail sums) err towards reading on, never
     // towards pruning a node the full bound would keep.
-    std::array<double, kMaxCheckpoints> read_by{};
+    std::array<double, kMaxCheckpoints> read_by;  // written up to checkpoints(r) before any read
     if (stop || tail_out) {
       const double needed = cutoff * static_cast<double>(n) - kCutoffSlack;
       for (size_t k = 0; k < checks; ++k) {
@@ -263,7 +263,7 @@ size_t CorrelativeMatcher::children(const Rotation& rot, const Node& n, const Ta
                                     const InRegion& in_region, double cutoff, TailSums& tails,
                                     std::array<Node, 4>& out) const {
   // Copied first: `tails` may be `n_tails`, and growing it would move them.
-  std::array<float, kMaxCheckpoints> parent{};
+  std::array<float, kMaxCheckpoints> parent;  // written up to checkpoints(rot) before any read
   const float* parent_tail = nullptr;
   if (n.tail >= 0) {
     std::copy_n(n_tails.begin() + n.tail, checkpoints(rot), parent.begin());
