@@ -85,6 +85,9 @@ static int run(int argc, char** argv) {
                 {"guard-max-search-nodes", "N", "methods with the look-alike guard: nodes one look-alike search charged "
                  "for see-through may score before it answers with the best place charged so far (0 = no limit)",
                  std::to_string(krp::LookAlikeGuardParams{}.max_search_nodes)},
+                {"guard-unverified-is-settled", "", "methods with the look-alike guard: a converged filter whose "
+                 "look-alike searches all ran out of --guard-max-search-nodes with nothing found reads as settled, "
+                 "not widened (LookAlikeGuardParams::unverified_is_unsettled false; the guard before it)", ""},
                 {"guard-refit-ignores-see-through", "", "methods with the look-alike guard: the rival test re-fits "
                  "each side to the likelihood alone and charges the see-through penalty where that puts it "
                  "(RivalTestParams::refit_charges_see_through false; the guard before it was the default)", ""},
@@ -185,8 +188,9 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.search_charges_see_through = !args.flag("guard-search-ignores-see-through");
   cfg.method_settings.guard.recheck_every_updates = static_cast<int>(
       args.integerInRange("guard-recheck-every", 0, krp::LookAlikeGuardParams::kMaxRecheckEveryUpdates));
-  cfg.method_settings.guard.max_search_nodes = args.integer("guard-max-search-nodes");
-  if (cfg.method_settings.guard.max_search_nodes < 0) throw krp::InputError("--guard-max-search-nodes", "must be 0 or more");
+  cfg.method_settings.guard.max_search_nodes =
+      args.integerInRange("guard-max-search-nodes", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
+  cfg.method_settings.guard.unverified_is_unsettled = !args.flag("guard-unverified-is-settled");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,
                                   cfg.method_settings.matcher);
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");

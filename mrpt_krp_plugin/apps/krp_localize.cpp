@@ -249,6 +249,10 @@ static int run(int argc, char** argv) {
                  "the filter stays converged, its whole-map look-alike search runs again every N updates (0 = only "
                  "when the filter converges afresh); on a large map with a long-range scanner that search is most of "
                  "the filter's time", std::to_string(krp::LookAlikeGuardParams{}.recheck_every_updates)},
+                {"guard-max-search-nodes", "N", "methods with the look-alike guard: nodes one look-alike search may "
+                 "score (0 = no limit); a converged filter whose searches all ran out of it with nothing found is "
+                 "reported unverified, its std widened (raise it for a large map)",
+                 std::to_string(krp::LookAlikeGuardParams{}.max_search_nodes)},
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"ground-truth", "FILE", "ground truth 'step x y phi' (optional)", ""},
                 {"out-dir", "DIR", "output folder", "out/localize"},
@@ -283,6 +287,7 @@ static int run(int argc, char** argv) {
     krp::useConfidenceCalibration(krp::readConfidenceCalibration(s["calibration"]), ms.relocalizer, ms.matcher);
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
   ms.guard.recheck_every_updates = static_cast<int>(toWholeNumber(s, "guard_recheck_every", 0, krp::LookAlikeGuardParams::kMaxRecheckEveryUpdates));
+  ms.guard.max_search_nodes = toWholeNumber(s, "guard_max_search_nodes", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
   const bool every_scan = s["single_scan"] == "all";
   const auto single_scan = every_scan ? 0L : static_cast<long>(toWholeNumber(s, "single_scan", -1, kMaxStep));
   const auto stride = static_cast<long>(toWholeNumber(s, "single_scan_stride", 1, kMaxStep));
@@ -332,7 +337,7 @@ static int run(int argc, char** argv) {
 
   std::ostringstream csv;
   csv << "step,x_m,y_m,phi_rad,std_xy_m,std_phi_deg,ambiguous,scan_unexplained,particles,cpu_s,look_alike_searches,"
-         "look_alike_search_cpu_s"
+         "look_alike_search_cpu_s,look_alike_searches_unfinished,look_alike_unverified"
       << (truth.empty() ? "" : ",error_xy_m,error_phi_deg")
       << "\n";
   std::vector<krp::UpdateRecord> records;
@@ -343,7 +348,7 @@ static int run(int argc, char** argv) {
     records.push_back(r);
     csv << i << "," << e.mean.x << "," << e.mean.y << "," << e.mean.phi << "," << r.spread.xy_std_m << "," << r.spread.phi_std_deg << ","
         << r.ambiguous << "," << r.scan_unexplained << "," << e.particles << "," << e.cpu_s << "," << e.look_alike_searches << ","
-        << e.look_alike_search_cpu_s;
+        << e.look_alike_search_cpu_s << "," << e.look_alike_searches_unfinished << "," << e.look_alike_unverified;
     if (!truth.empty()) csv << "," << r.error_xy_m << "," << r.error_phi_deg;
     csv << "\n";
   }
@@ -361,17 +366,23 @@ static int run(int argc, char** argv) {
   if (e.scan_unexplained)
     sum << "unsettled: the map explains only " << e.fit_fraction
         << " of the last scan's returns (clutter?); the std above is widened\n";
+  if (e.look_alike_unverified)
+    sum << "unverified: every look-alike search since the filter converged ran out of its budget of "
+        << ms.guard.max_search_nodes << " nodes with nothing found, so nothing rules out a look-alike place"
+        << (ms.guard.unverified_is_unsettled ? "; the std above is widened" : "") << "\n";
   double cpu = 0, search_cpu = 0;
-  int searches = 0;
+  int searches = 0, unfinished = 0;
   for (const auto& r : records) {
     cpu += r.cpu_s;
     search_cpu += r.look_alike_search_cpu_s;
     searches += r.look_alike_searches;
+    unfinished += r.look_alike_searches_unfinished;
   }
   sum << "localization CPU: " << cpu << " s\n";
   if (krp::methodUsesLookAlikeGuard(s["method"]))
     sum << "look-alike searches: " << searches << ", " << search_cpu << " s of that CPU (every "
-        << ms.guard.recheck_every_updates << " update(s) while converged; --guard-recheck-every spaces them out)\n";
+        << ms.guard.recheck_every_updates << " update(s) while converged; --guard-recheck-every spaces them out); "
+        << unfinished << " ran out of their node budget with nothing found\n";
   if (!truth.empty()) {
     const auto o = krp::evaluateTrial(records, krp::ConvergenceCriteria{});
     std::vector<double> errs;

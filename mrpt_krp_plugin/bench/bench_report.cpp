@@ -182,11 +182,11 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
   trials_csv << "world,lidar,method,trial,trial_seed,filter_seed,converged,updates_to_convergence,"
                 "distance_to_convergence_m,cpu_to_convergence_s,initial_particles,mean_particles,"
                 "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,confident_and_right,total_cpu_s,"
-                "look_alike_searches,look_alike_search_cpu_s,seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,seed_best_fit_fraction,seed_cpu_s,kidnap_step,kidnap_tracking_before,"
+                "look_alike_searches,look_alike_search_cpu_s,look_alike_searches_unfinished,seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,seed_best_fit_fraction,seed_cpu_s,kidnap_step,kidnap_tracking_before,"
                 "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s,"
                 "path_verdict,path_places,path_end_places,path_closest_log_ratio,path_closest_distance_m,path_closest_source\n";
   updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s,"
-                 "distance_m,fit_fraction,scan_unexplained,look_alike_searches,look_alike_search_cpu_s\n";
+                 "distance_m,fit_fraction,scan_unexplained,look_alike_searches,look_alike_search_cpu_s,look_alike_searches_unfinished,look_alike_unverified\n";
   for (const auto& r : records) {
     const auto& o = r.outcome;
     trials_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << r.trial_seed << ","
@@ -194,7 +194,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                << o.distance_to_convergence_m << "," << o.cpu_to_convergence_s << "," << o.initial_particles << ","
                << o.mean_particles << "," << o.particle_updates_to_convergence << "," << o.final_error_xy_m << ","
                << o.final_error_phi_deg << "," << o.confident_but_wrong << "," << o.confident_and_right << "," << o.total_cpu_s << ","
-               << o.look_alike_searches << "," << o.look_alike_search_cpu_s << "," << r.seed_hypotheses
+               << o.look_alike_searches << "," << o.look_alike_search_cpu_s << "," << o.look_alike_searches_unfinished << "," << r.seed_hypotheses
                << "," << r.seed_localized << "," << r.seed_best_error_xy_m << "," << r.seed_best_confidence << ","
                << r.seed_best_from_matcher << "," << r.seed_best_fit_fraction << "," << r.seed_cpu_s << "," << r.kidnap_step << ","
                << r.kidnap.tracking_before << "," << r.kidnap.updates_to_detect << "," << r.kidnap.recovered << ","
@@ -206,7 +206,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
       updates_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << i << "," << u.error_xy_m
                   << "," << u.error_phi_deg << "," << u.spread.xy_std_m << "," << u.spread.phi_std_deg << "," << u.ambiguous << "," << u.particles << ","
                   << u.cpu_s << "," << u.distance_m << "," << u.fit_fraction << "," << u.scan_unexplained << "," << u.look_alike_searches << ","
-                  << u.look_alike_search_cpu_s << "\n";
+                  << u.look_alike_search_cpu_s << "," << u.look_alike_searches_unfinished << "," << u.look_alike_unverified << "\n";
     }
   }
   writeFileAtomically((fs::path(out_dir) / "trials.csv").string(), trials_csv.str());
@@ -290,7 +290,12 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
         "the scan nearly as well (the filter reports itself ambiguous), and widened when fewer than "
      << formatNumber(100.0 * cfg.method_settings.guard.min_fit_fraction)
      << " % of the scan's returns land on mapped walls at the mean (too much unmapped clutter to vouch for "
-        "the pose), so such an answer is not confident. "
+        "the pose)"
+     << (cfg.method_settings.guard.unverified_is_unsettled
+             ? ", and widened while every look-alike search since the filter converged has run out of its "
+               "node budget with nothing found (nothing rules out a look-alike; column look_alike_unverified of updates.csv)"
+             : "")
+     << ", so such an answer is not confident. "
         "Confident-wrong: confident, yet the mean is outside tolerance; confident-right: confident and within it "
         "(the share of trials where the method both is right and says so). Medians of updates, distance, CPU and particle-updates are over "
         "converged trials. Ratios are against uniform-mcl in this same run.\n\n"

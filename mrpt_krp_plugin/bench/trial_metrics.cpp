@@ -23,6 +23,8 @@ UpdateRecord makeUpdateRecord(const MclEstimate& e, const mrpt::math::TPose2D& t
   r.cpu_s = e.cpu_s;
   r.look_alike_searches = e.look_alike_searches;
   r.look_alike_search_cpu_s = e.look_alike_search_cpu_s;
+  r.look_alike_searches_unfinished = e.look_alike_searches_unfinished;
+  r.look_alike_unverified = e.look_alike_unverified;
   r.distance_m = distance_m;
   r.kidnap_detected = e.kidnap_detected;
   return r;
@@ -42,6 +44,7 @@ TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& u, const Convergence
     o.total_cpu_s += r.cpu_s;
     o.look_alike_searches += r.look_alike_searches;
     o.look_alike_search_cpu_s += r.look_alike_search_cpu_s;
+    o.look_alike_searches_unfinished += r.look_alike_searches_unfinished;
   }
   o.mean_particles = sum_particles / static_cast<double>(u.size());
   if (first >= 0) {

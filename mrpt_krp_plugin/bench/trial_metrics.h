@@ -36,6 +36,8 @@ struct UpdateRecord {
   double cpu_s = 0.0;
   int look_alike_searches = 0;          ///< MclEstimate::look_alike_searches
   double look_alike_search_cpu_s = 0.0;  ///< their CPU, part of cpu_s [s]
+  int look_alike_searches_unfinished = 0;  ///< MclEstimate::look_alike_searches_unfinished
+  bool look_alike_unverified = false;      ///< MclEstimate::look_alike_unverified
   double distance_m = 0.0;   ///< true distance travelled up to this update [m]
   bool kidnap_detected = false;  ///< the filter's kidnap detector fired at this update
 };
@@ -58,6 +60,7 @@ struct TrialOutcome {
   double total_cpu_s = 0.0;
   int look_alike_searches = 0;          ///< the guard's whole-map searches over the trial
   double look_alike_search_cpu_s = 0.0;  ///< their CPU, part of total_cpu_s [s]
+  int look_alike_searches_unfinished = 0;  ///< of those, the ones out of budget with nothing found
 };
 
 TrialOutcome evaluateTrial(const std::vector<UpdateRecord>& updates, const ConvergenceCriteria& criteria);

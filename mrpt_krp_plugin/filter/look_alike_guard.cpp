@@ -25,7 +25,9 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
     throw std::invalid_argument("LookAlikeGuard: recheck_every_updates must be at most " +
                                 std::to_string(LookAlikeGuardParams::kMaxRecheckEveryUpdates));
   if (params_.history_updates < 0) throw std::invalid_argument("LookAlikeGuard: history_updates must be 0 or more");
-  if (params_.max_search_nodes < 0) throw std::invalid_argument("LookAlikeGuard: max_search_nodes must be 0 or more");
+  if (params_.max_search_nodes < 0 || params_.max_search_nodes > LookAlikeGuardParams::kMaxSearchNodesLimit)
+    throw std::invalid_argument("LookAlikeGuard: max_search_nodes must be 0 (no limit) to " +
+                                std::to_string(LookAlikeGuardParams::kMaxSearchNodesLimit));
   if (params_.searches_per_update < 1) throw std::invalid_argument("LookAlikeGuard: searches_per_update must be at least 1");
   if (!(params_.min_fit_fraction >= 0.0 && params_.min_fit_fraction <= 1.0))
     throw std::invalid_argument("LookAlikeGuard: min_fit_fraction must be in [0, 1]");
@@ -43,10 +45,9 @@ double LookAlikeGuard::score(const mrpt::obs::CObservation2DRangeScan& scan, con
   return matcher_->scoreAt(scan, pose) - (charged ? charged->share(pose) : 0.0);
 }
 
-std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
-                                                   const mrpt::math::TPose2D& pose,
-                                                   const std::vector<mrpt::math::TPoint2D>& also_excluded,
-                                                   const SeeThroughPenalty::Scan* see_through) const {
+LookAlikeSearch LookAlikeGuard::search(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
+                                       const std::vector<mrpt::math::TPoint2D>& also_excluded,
+                                       const SeeThroughPenalty::Scan* see_through) const {
   LookAlike place;
   place.tracked_score = score(scan, pose, see_through);
   MatchRequest request;
@@ -58,10 +59,13 @@ std::optional<LookAlike> LookAlikeGuard::lookAlike(const mrpt::obs::CObservation
   if (const auto* charged = searchCharge(see_through))
     request.leaf_penalty = [charged](const mrpt::math::TPose2D& p, double enough) { return charged->shareUpTo(p, enough); };
   const auto found = matcher_->match(scan, request);
-  if (found.empty()) return std::nullopt;
+  LookAlikeSearch out;
+  out.cut_short = matcher_->lastSearchCutShort();
+  if (found.empty()) return out;
   place.pose = found.front().pose;
   place.score = found.front().score;
-  return place;
+  out.found = place;
+  return out;
 }
 
 bool LookAlikeGuard::isLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& place,

@@ -56,10 +56,17 @@ struct LookAlikeGuardParams {
   /// [0..1]. In the bench's cluttered office, right estimates ended with 53-89 % of their returns
   /// explained and the confidently wrong one with 63 %; in the clean office, right ones at 72 % or more.
   double min_fit_fraction = 0.7;
-  /// Such an estimate's reported spread is raised to at least these, above `converged`'s, so a
-  /// consumer reading only the covariance sees an unsettled pose [m], [deg].
+  /// Such an estimate's reported spread (and an unverified one's, below) is raised to at least
+  /// these, above `converged`'s, so a consumer reading only the covariance sees an unsettled pose
+  /// [m], [deg].
   double unexplained_xy_std_m = 1.0;
   double unexplained_phi_std_deg = 20.0;
+  /// A converged estimate for which every look-alike search since the filter converged ran out of
+  /// max_search_nodes with nothing found is reported unverified (MclEstimate::look_alike_unverified,
+  /// its spread widened as above): the guard could not rule out a look-alike, so the pose is not
+  /// one to vouch for. The first search that finishes verifies it until the filter spreads out
+  /// again. false: an unfinished search counts as finding nothing (the guard before this parameter).
+  bool unverified_is_unsettled = true;
   /// When the filter charges see-through beams, the search charges every candidate place its
   /// share of them too (a return from beyond a mapped wall explains nothing), so that places
   /// whose endpoints fit only through walls do not hide the next best one. false: the search
@@ -68,8 +75,11 @@ struct LookAlikeGuardParams {
   bool search_charges_see_through = true;
   /// A scan whose endpoints fit many places (among racks) leaves many places
   /// to rule out, which can cost seconds: one search scores at most this many nodes and then
-  /// takes the best place charged so far (CorrelativeMatcher's max_nodes_scored). 0: no limit.
+  /// takes the best place charged so far (CorrelativeMatcher's max_nodes_scored); when that is
+  /// none, the search is unfinished (unverified_is_unsettled). 0: no limit.
   long long max_search_nodes = 1000000;
+  /// The largest max_search_nodes accepted (days of one core): beyond it, 0 (no limit) says it.
+  static constexpr long long kMaxSearchNodesLimit = 1000000000000LL;
   RivalTestParams rival_test;  ///< how a look-alike that fits nearly as well is decided
   /// A look-alike found now is also weighed on this many earlier scans, each side moved back
   /// along the odometry to where a twin robot would have stood (ScanHistory): a place that fits
@@ -103,6 +113,14 @@ struct LookAlike {
   double tracked_score = 0.0;  ///< the tracked pose's [0..1]
 };
 
+/// What one look-alike search found, and whether it looked everywhere.
+struct LookAlikeSearch {
+  std::optional<LookAlike> found;
+  /// The search ran out of LookAlikeGuardParams::max_search_nodes before it had ruled out every
+  /// place: `found` is a true look-alike when set, but when empty a look-alike may still exist.
+  bool cut_short = false;
+};
+
 class LookAlikeGuard {
  public:
   /// Throws std::invalid_argument for a share outside (0, 1], margins or a fit fraction outside
@@ -121,7 +139,14 @@ class LookAlikeGuard {
   /// places whose endpoints fit only because beams pass through walls do not hide the next best.
   std::optional<LookAlike> lookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
                                      const std::vector<mrpt::math::TPoint2D>& also_excluded = {},
-                                     const SeeThroughPenalty::Scan* see_through = nullptr) const;
+                                     const SeeThroughPenalty::Scan* see_through = nullptr) const {
+    return search(scan, pose, also_excluded, see_through).found;
+  }
+  /// lookAlike(), saying also whether the search ran out of max_search_nodes. Not thread-safe
+  /// for one guard (nor is its matcher): each filter thread needs its own.
+  LookAlikeSearch search(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
+                         const std::vector<mrpt::math::TPoint2D>& also_excluded = {},
+                         const SeeThroughPenalty::Scan* see_through = nullptr) const;
   /// It fits at least as well as the tracked pose (by score_margin): particles should move there.
   bool fitsAtLeastAsWell(const LookAlike& place) const {
     return place.score >= place.tracked_score - params_.score_margin;

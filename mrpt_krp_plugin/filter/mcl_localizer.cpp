@@ -151,6 +151,7 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
     converged_ = false;
     rival_.reset();
     rejected_.clear();
+    verified_ = unfinished_since_convergence_ = false;
     return false;
   }
   const bool fresh = !converged_;
@@ -200,10 +201,18 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
     std::vector<mrpt::math::TPoint2D> excluded;
     for (const auto& test : rejected_) excluded.emplace_back(test.rival().x, test.rival().y);
     const double t0 = threadCpuSeconds();
-    const auto found = guard_->lookAlike(scan, mean, excluded, see_through);
+    const auto result = guard_->search(scan, mean, excluded, see_through);
     search_cpu_this_update_ += threadCpuSeconds() - t0;
     ++searches_this_update_;
-    if (!found) return false;
+    const auto& found = result.found;
+    if (!result.cut_short) verified_ = true;
+    if (!found) {
+      if (result.cut_short) {
+        ++unfinished_this_update_;
+        unfinished_since_convergence_ = true;
+      }
+      return false;
+    }
     // A place that fits at least as well at a fresh convergence gets particles at once. Later,
     // and for places that fit a little worse, the scans that follow decide first: moving
     // particles at every check would keep a filter that is right from ever settling.
@@ -224,6 +233,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   MclEstimate e;
   searches_this_update_ = 0;
   search_cpu_this_update_ = 0.0;
+  unfinished_this_update_ = 0;
   if (!initialized_) {
     reseedMrptGlobalRandom(params_.seed + static_cast<uint32_t>(initializations_));
     init_->initialize(pf_, filter_.m_options, *map_, *step.observations);
@@ -232,6 +242,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     e.initialized = true;
     kidnap_.reset();
     converged_ = false;
+    verified_ = unfinished_since_convergence_ = false;
     rival_.reset();
     rejected_.clear();
     history_.clear();  // scans from before a re-seed may be from before a kidnap
@@ -269,6 +280,12 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     e.ambiguous_with = rival_->rival();
     e.cov = covarianceWithLookAlike(cov, e.mean, rival_->rival());
   }
+  if (guard_ && converged_ && unfinished_since_convergence_ && !verified_) {
+    e.look_alike_unverified = true;
+    const auto& gp = guard_->params();
+    if (gp.unverified_is_unsettled)
+      e.cov = covarianceWithSpreadAtLeast(e.cov, gp.unexplained_xy_std_m, gp.unexplained_phi_std_deg);
+  }
   const bool fit_floor = guard_ && guard_->params().min_fit_fraction > 0.0 && converged_;
   if (scan && (params_.kidnap.enabled || fit_floor)) e.fit_fraction = fit_scorer_->score(*scan, e.mean).fit_fraction;
   if (fit_floor && e.fit_fraction >= 0.0 && e.fit_fraction < guard_->params().min_fit_fraction) {
@@ -283,6 +300,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   e.particles = pf_.size();
   e.look_alike_searches = searches_this_update_;
   e.look_alike_search_cpu_s = search_cpu_this_update_;
+  e.look_alike_searches_unfinished = unfinished_this_update_;
   e.cpu_s = threadCpuSeconds() - t0;
   return e;
 }

@@ -56,6 +56,13 @@ struct MclEstimate {
   /// LookAlikeGuardParams::recheck_every_updates trades against how soon a look-alike is seen.
   int look_alike_searches = 0;
   double look_alike_search_cpu_s = 0.0;
+  /// Of those searches, the ones that ran out of LookAlikeGuardParams::max_search_nodes with
+  /// nothing found: a look-alike may exist that they did not reach.
+  int look_alike_searches_unfinished = 0;
+  /// The filter has converged, but no look-alike search since then has finished within the
+  /// guard's node budget: nothing rules out a look-alike place, and with the guard's
+  /// unverified_is_unsettled `cov` is widened so the pose reads unsettled.
+  bool look_alike_unverified = false;
 };
 
 /// MRPT's CMonteCarloLocalization2D driven step by step, with the start chosen by a
@@ -141,6 +148,11 @@ class MclLocalizer {
   int updates_since_check_ = 0;         ///< converged updates since the guard last searched
   int searches_this_update_ = 0;        ///< MclEstimate::look_alike_searches, counted as they run
   double search_cpu_this_update_ = 0.0;  ///< MclEstimate::look_alike_search_cpu_s, likewise [s]
+  int unfinished_this_update_ = 0;       ///< MclEstimate::look_alike_searches_unfinished, likewise
+  /// Since the filter last converged: a search ran out of budget with nothing found, and one
+  /// finished (MclEstimate::look_alike_unverified is the first without the second).
+  bool unfinished_since_convergence_ = false;
+  bool verified_ = false;
   std::optional<RivalTest> rival_;      ///< a look-alike being weighed against the mean
   std::deque<RivalTest> rejected_;      ///< look-alikes the scans decided against, moved by odometry
   ScanHistory history_;                 ///< earlier scans a new look-alike is weighed on (guard's history_updates)

@@ -105,6 +105,7 @@ const std::map<std::string, Reader>& readers() {
       {"look_alike_ambiguity_margin", number(&NodeParams::look_alike_ambiguity_margin, 0.0, 1.0)},
       {"look_alike_min_fit_fraction", number(&NodeParams::look_alike_min_fit_fraction, 0.0, 1.0)},
       {"look_alike_watch_rejected", boolean(&NodeParams::look_alike_watch_rejected)},
+      {"look_alike_unverified_is_unsettled", boolean(&NodeParams::look_alike_unverified_is_unsettled)},
       {"see_through_penalty", boolean(&NodeParams::see_through_penalty)},
       {"look_alike_search_charges_see_through", boolean(&NodeParams::look_alike_search_charges_see_through)},
       {"look_alike_refit_charges_see_through", boolean(&NodeParams::look_alike_refit_charges_see_through)},
@@ -198,6 +199,7 @@ LookAlikeGuardParams NodeParams::lookAlikeGuard() const {
   g.ambiguity_margin = look_alike_ambiguity_margin;
   g.min_fit_fraction = look_alike_min_fit_fraction;
   g.watch_rejected = look_alike_watch_rejected;
+  g.unverified_is_unsettled = look_alike_unverified_is_unsettled;
   g.search_charges_see_through = look_alike_search_charges_see_through;
   g.rival_test.refit_charges_see_through = look_alike_refit_charges_see_through;
   g.rival_test.finer_refinements = look_alike_rival_refinements;

@@ -78,6 +78,9 @@ struct NodeParams {
   /// `track`: nodes one charged look-alike search may score before it answers with the best place
   /// charged so far (0 = no limit; LookAlikeGuardParams::max_search_nodes)
   int look_alike_max_search_nodes = static_cast<int>(LookAlikeGuardParams{}.max_search_nodes);
+  /// `track`: a converged pose whose look-alike searches all ran out of that budget with nothing
+  /// found is published with a widened covariance (LookAlikeGuardParams::unverified_is_unsettled)
+  bool look_alike_unverified_is_unsettled = LookAlikeGuardParams{}.unverified_is_unsettled;
   /// `track`: while the filter stays converged, the look-alike search runs again every this many
   /// filter updates (0 = only when it converges afresh; LookAlikeGuardParams::recheck_every_updates)
   int look_alike_recheck_every_updates = LookAlikeGuardParams{}.recheck_every_updates;

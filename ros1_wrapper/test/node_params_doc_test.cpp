@@ -40,6 +40,7 @@ TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
   EXPECT_DOUBLE_EQ(doc["look_alike_ambiguity_margin"].as<double>(), d.look_alike_ambiguity_margin);
   EXPECT_DOUBLE_EQ(doc["look_alike_min_fit_fraction"].as<double>(), d.look_alike_min_fit_fraction);
   EXPECT_EQ(doc["look_alike_watch_rejected"].as<bool>(), d.look_alike_watch_rejected);
+  EXPECT_EQ(doc["look_alike_unverified_is_unsettled"].as<bool>(), d.look_alike_unverified_is_unsettled);
   EXPECT_EQ(doc["see_through_penalty"].as<bool>(), d.see_through_penalty);
   EXPECT_EQ(doc["look_alike_search_charges_see_through"].as<bool>(), d.look_alike_search_charges_see_through);
   EXPECT_EQ(doc["look_alike_refit_charges_see_through"].as<bool>(), d.look_alike_refit_charges_see_through);
@@ -83,7 +84,9 @@ TEST(RosNodeParams, TheGuardGetsTheChargeSwitchesAndItsBudget) {
   p.look_alike_refit_charges_see_through = false;
   p.look_alike_rival_refinements = 0;
   p.look_alike_max_search_nodes = 0;
+  p.look_alike_unverified_is_unsettled = false;
   const auto g = p.lookAlikeGuard();
+  EXPECT_FALSE(g.unverified_is_unsettled);
   EXPECT_FALSE(g.search_charges_see_through);
   EXPECT_FALSE(g.rival_test.refit_charges_see_through);
   EXPECT_EQ(g.rival_test.finer_refinements, 0);

@@ -451,5 +451,63 @@ TEST(LookAlikeGuard, SearchesAsOftenAsTheRecheckIntervalSaysAndReportsTheirCost)
   EXPECT_EQ(unguarded.update(stepWithScan(scanAtTruth(*room, 40))).look_alike_searches, 0);
 }
 
+// A search that runs out of its node budget with nothing found has not ruled out a look-alike:
+// until one search since the filter converged finishes, the estimate is reported unverified and
+// its spread widened like an unexplained scan's; the switch leaves only the flag.
+TEST(LookAlikeGuard, AConvergenceNoSearchCouldFinishCheckingIsReportedUnverified) {
+  const auto room = std::make_shared<mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  const auto matcher = std::make_shared<CorrelativeMatcher>(*room);
+  auto guardWithBudget = [&](long long nodes, bool unverified_is_unsettled = true) {
+    auto params = withAmbiguityMargin(0.0);
+    params.max_search_nodes = nodes;
+    params.unverified_is_unsettled = unverified_is_unsettled;
+    return std::make_shared<LookAlikeGuard>(matcher, params);
+  };
+  constexpr long long kNoLimit = 0, kOneNode = 1;
+  const double settled_xy_std_m = LookAlikeGuardParams{}.converged.xy_std_m;
+  const double widened_xy_std_m = LookAlikeGuardParams{}.unexplained_xy_std_m;
+
+  MclLocalizer starved(room, std::make_shared<OnePoseInitializer>(kTruth));
+  starved.setLookAlikeGuard(guardWithBudget(kOneNode));
+  for (uint64_t i = 0; i < 4; ++i) {
+    const auto e = starved.update(stepWithScan(scanAtTruth(*room, 60 + i)));
+    EXPECT_EQ(e.look_alike_searches, 1);
+    EXPECT_EQ(e.look_alike_searches_unfinished, 1);
+    EXPECT_TRUE(e.look_alike_unverified) << "update " << i;
+    EXPECT_GE(std::sqrt(e.cov(0, 0)) + 1e-9, widened_xy_std_m) << "update " << i;
+  }
+
+  MclLocalizer flagged_only(room, std::make_shared<OnePoseInitializer>(kTruth));
+  flagged_only.setLookAlikeGuard(guardWithBudget(kOneNode, false));
+  const auto flagged = flagged_only.update(stepWithScan(scanAtTruth(*room, 60)));
+  EXPECT_TRUE(flagged.look_alike_unverified);
+  EXPECT_LT(std::sqrt(flagged.cov(0, 0)), settled_xy_std_m) << "the switch off leaves the spread as it is";
+
+  // One finished search verifies the convergence: later searches out of budget do not undo it.
+  MclLocalizer checked(room, std::make_shared<OnePoseInitializer>(kTruth));
+  checked.setLookAlikeGuard(guardWithBudget(kNoLimit));
+  for (uint64_t i = 0; i < 2; ++i) {
+    const auto e = checked.update(stepWithScan(scanAtTruth(*room, 70 + i)));
+    EXPECT_EQ(e.look_alike_searches_unfinished, 0);
+    EXPECT_FALSE(e.look_alike_unverified);
+  }
+  checked.setLookAlikeGuard(guardWithBudget(kOneNode));
+  const auto after = checked.update(stepWithScan(scanAtTruth(*room, 72)));
+  EXPECT_EQ(after.look_alike_searches_unfinished, 1);
+  EXPECT_FALSE(after.look_alike_unverified);
+  EXPECT_LT(std::sqrt(after.cov(0, 0)), settled_xy_std_m);
+}
+
+TEST(LookAlikeGuard, RefusesASearchBudgetOutsideItsRange) {
+  const auto matcher = std::make_shared<CorrelativeMatcher>(test::asymmetricRoom());
+  LookAlikeGuardParams p;
+  p.max_search_nodes = -1;
+  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
+  p.max_search_nodes = LookAlikeGuardParams::kMaxSearchNodesLimit + 1;
+  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
+  p.max_search_nodes = LookAlikeGuardParams::kMaxSearchNodesLimit;
+  EXPECT_NO_THROW(LookAlikeGuard(matcher, p));
+}
+
 }  // namespace
 }  // namespace krp
