@@ -401,15 +401,21 @@ TEST(LookAlikeGuard, RefusesANegativeHistory) {
   EXPECT_NO_THROW(LookAlikeGuard(std::make_shared<CorrelativeMatcher>(test::asymmetricRoom()), p));
 }
 
-TEST(LookAlikeGuard, RefusesARecheckIntervalOutsideItsRange) {
+/// The guard refuses `field` just below 0 and just above `largest`, and accepts `largest`.
+template <typename T>
+void expectRefusedOutsideZeroTo(T LookAlikeGuardParams::*field, T largest) {
   const auto matcher = std::make_shared<CorrelativeMatcher>(test::asymmetricRoom());
   LookAlikeGuardParams p;
-  p.recheck_every_updates = -1;
+  p.*field = -1;
   EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
-  p.recheck_every_updates = LookAlikeGuardParams::kMaxRecheckEveryUpdates + 1;
+  p.*field = largest + 1;
   EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
-  p.recheck_every_updates = LookAlikeGuardParams::kMaxRecheckEveryUpdates;
+  p.*field = largest;
   EXPECT_NO_THROW(LookAlikeGuard(matcher, p));
+}
+
+TEST(LookAlikeGuard, RefusesARecheckIntervalOutsideItsRange) {
+  expectRefusedOutsideZeroTo(&LookAlikeGuardParams::recheck_every_updates, LookAlikeGuardParams::kMaxRecheckEveryUpdates);
 }
 
 TEST(LookAlikeGuard, RefusesNoSearchPerUpdate) {
@@ -499,14 +505,7 @@ TEST(LookAlikeGuard, AConvergenceNoSearchCouldFinishCheckingIsReportedUnverified
 }
 
 TEST(LookAlikeGuard, RefusesASearchBudgetOutsideItsRange) {
-  const auto matcher = std::make_shared<CorrelativeMatcher>(test::asymmetricRoom());
-  LookAlikeGuardParams p;
-  p.max_search_nodes = -1;
-  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
-  p.max_search_nodes = LookAlikeGuardParams::kMaxSearchNodesLimit + 1;
-  EXPECT_THROW(LookAlikeGuard(matcher, p), std::invalid_argument);
-  p.max_search_nodes = LookAlikeGuardParams::kMaxSearchNodesLimit;
-  EXPECT_NO_THROW(LookAlikeGuard(matcher, p));
+  expectRefusedOutsideZeroTo(&LookAlikeGuardParams::max_search_nodes, LookAlikeGuardParams::kMaxSearchNodesLimit);
 }
 
 }  // namespace
