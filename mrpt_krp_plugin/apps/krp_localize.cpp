@@ -367,8 +367,9 @@ static int run(int argc, char** argv) {
     sum << "unsettled: the map explains only " << e.fit_fraction
         << " of the last scan's returns (clutter?); the std above is widened\n";
   if (e.look_alike_unverified)
-    sum << "unverified: every look-alike search since the filter converged ran out of its budget of "
-        << ms.guard.max_search_nodes << " nodes with nothing found, so nothing rules out a look-alike place"
+    sum << "unverified: every look-alike search since the filter converged ran out of its node budget "
+        << "(--guard-max-search-nodes " << ms.guard.max_search_nodes
+        << ") with nothing found, so nothing rules out a look-alike place"
         << (ms.guard.unverified_is_unsettled ? "; the std above is widened" : "") << "\n";
   double cpu = 0, search_cpu = 0;
   int searches = 0, unfinished = 0;
