@@ -18,4 +18,14 @@ std::optional<std::string> guardCostNote(double search_cpu_s, int searches, doub
   return s.str();
 }
 
+std::string unverifiedPoseNote(long long max_search_nodes, bool widened) {
+  std::ostringstream s;
+  s << "pose unverified: every look-alike search since the filter converged ran out of "
+       "look_alike_max_search_nodes ("
+    << max_search_nodes << ") with nothing found, so nothing rules out a look-alike place"
+    << (widened ? "; the published covariance is widened" : "; look_alike_unverified_is_unsettled is off, so the "
+                                                               "published covariance is not widened");
+  return s.str();
+}
+
 }  // namespace krp::ros1

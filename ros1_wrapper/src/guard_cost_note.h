@@ -15,4 +15,10 @@ namespace krp::ros1 {
 std::optional<std::string> guardCostNote(double search_cpu_s, int searches, double scan_interval_s,
                                          int recheck_every_updates);
 
+/// What the track-mode node says while its converged filter is unverified (MclEstimate::
+/// look_alike_unverified): every look-alike search since it converged ran out of
+/// `max_search_nodes` with nothing found. Names the budget to raise, and says whether the
+/// published covariance is widened (`widened`: look_alike_unverified_is_unsettled).
+std::string unverifiedPoseNote(long long max_search_nodes, bool widened);
+
 }  // namespace krp::ros1

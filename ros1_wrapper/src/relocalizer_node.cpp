@@ -437,13 +437,8 @@ void RelocalizerNode::track(TrackJob& job) {
       << " % of the scan's returns are explained by the map (clutter?); the published covariance is widened";
     report(s.str(), true);
   }
-  if (u->estimate.look_alike_unverified) {
-    std::ostringstream s;
-    s << "pose unverified: every look-alike search since the filter converged ran out of look_alike_max_search_nodes ("
-      << params_.look_alike_max_search_nodes << ") with nothing found, so nothing rules out a look-alike place"
-      << (params_.look_alike_unverified_is_unsettled ? "; the published covariance is widened" : "");
-    report(s.str(), true);
-  }
+  if (u->estimate.look_alike_unverified)
+    report(unverifiedPoseNote(params_.look_alike_max_search_nodes, params_.look_alike_unverified_is_unsettled), true);
   geometry_msgs::PoseArray cloud;
   cloud.header = header;
   const auto& pf = job.state->tracker->localizer().particles();

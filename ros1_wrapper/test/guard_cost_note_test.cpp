@@ -19,5 +19,14 @@ TEST(GuardCostNote, SpeaksOnlyWhenTheSearchesOutlastTheScanInterval) {
   EXPECT_NE(note->find("look_alike_recheck_every_updates (3)"), std::string::npos) << *note;
 }
 
+TEST(GuardCostNote, AnUnverifiedPoseNamesTheBudgetAndWhetherTheCovarianceIsWidened) {
+  const auto widened = unverifiedPoseNote(4000000, true);
+  EXPECT_NE(widened.find("look_alike_max_search_nodes (4000000)"), std::string::npos) << widened;
+  EXPECT_NE(widened.find("the published covariance is widened"), std::string::npos) << widened;
+  const auto flagged = unverifiedPoseNote(1, false);
+  EXPECT_NE(flagged.find("look_alike_max_search_nodes (1)"), std::string::npos) << flagged;
+  EXPECT_NE(flagged.find("is not widened"), std::string::npos) << flagged;
+}
+
 }  // namespace
 }  // namespace krp::ros1
