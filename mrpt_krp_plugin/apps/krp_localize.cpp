@@ -371,21 +371,15 @@ static int run(int argc, char** argv) {
         << "(--guard-max-search-nodes " << ms.guard.max_search_nodes
         << ") with nothing found, so nothing rules out a look-alike place"
         << (ms.guard.unverified_is_unsettled ? "; the std above is widened" : "") << "\n";
-  double cpu = 0, search_cpu = 0;
-  int searches = 0, unfinished = 0;
-  for (const auto& r : records) {
-    cpu += r.cpu_s;
-    search_cpu += r.look_alike_search_cpu_s;
-    searches += r.look_alike_searches;
-    unfinished += r.look_alike_searches_unfinished;
-  }
-  sum << "localization CPU: " << cpu << " s\n";
+  // The totals over the updates; the convergence fields mean something only with a truth.
+  const auto o = krp::evaluateTrial(records, krp::ConvergenceCriteria{});
+  sum << "localization CPU: " << o.total_cpu_s << " s\n";
   if (krp::methodUsesLookAlikeGuard(s["method"]))
-    sum << "look-alike searches: " << searches << ", " << search_cpu << " s of that CPU (every "
-        << ms.guard.recheck_every_updates << " update(s) while converged; --guard-recheck-every spaces them out); "
-        << unfinished << " ran out of their node budget with nothing found\n";
+    sum << "look-alike searches: " << o.look_alike_searches << ", " << o.look_alike_search_cpu_s
+        << " s of that CPU (every " << ms.guard.recheck_every_updates
+        << " update(s) while converged; --guard-recheck-every spaces them out); " << o.look_alike_searches_unfinished
+        << " ran out of their node budget with nothing found\n";
   if (!truth.empty()) {
-    const auto o = krp::evaluateTrial(records, krp::ConvergenceCriteria{});
     std::vector<double> errs;
     for (const auto& r : records) errs.push_back(r.error_xy_m);
     sum << "converged: " << (o.converged ? "yes" : "no") << "\nupdates to convergence: " << o.updates_to_convergence

@@ -151,7 +151,7 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
     converged_ = false;
     rival_.reset();
     rejected_.clear();
-    verified_ = unfinished_since_convergence_ = false;
+    convergence_check_ = ConvergenceCheck::none;
     return false;
   }
   const bool fresh = !converged_;
@@ -205,12 +205,12 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
     search_cpu_this_update_ += threadCpuSeconds() - t0;
     ++searches_this_update_;
     const auto& found = result.found;
-    if (!result.cut_short) verified_ = true;
+    if (!result.cut_short)
+      convergence_check_ = ConvergenceCheck::finished;
+    else if (!found && convergence_check_ != ConvergenceCheck::finished)
+      convergence_check_ = ConvergenceCheck::unfinished;
     if (!found) {
-      if (result.cut_short) {
-        ++unfinished_this_update_;
-        unfinished_since_convergence_ = true;
-      }
+      if (result.cut_short) ++unfinished_this_update_;
       return false;
     }
     // A place that fits at least as well at a fresh convergence gets particles at once. Later,
@@ -242,7 +242,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     e.initialized = true;
     kidnap_.reset();
     converged_ = false;
-    verified_ = unfinished_since_convergence_ = false;
+    convergence_check_ = ConvergenceCheck::none;
     rival_.reset();
     rejected_.clear();
     history_.clear();  // scans from before a re-seed may be from before a kidnap
@@ -280,7 +280,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     e.ambiguous_with = rival_->rival();
     e.cov = covarianceWithLookAlike(cov, e.mean, rival_->rival());
   }
-  if (guard_ && converged_ && unfinished_since_convergence_ && !verified_) {
+  if (guard_ && converged_ && convergence_check_ == ConvergenceCheck::unfinished) {
     e.look_alike_unverified = true;
     const auto& gp = guard_->params();
     if (gp.unverified_is_unsettled)

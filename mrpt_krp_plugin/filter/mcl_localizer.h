@@ -149,10 +149,14 @@ class MclLocalizer {
   int searches_this_update_ = 0;        ///< MclEstimate::look_alike_searches, counted as they run
   double search_cpu_this_update_ = 0.0;  ///< MclEstimate::look_alike_search_cpu_s, likewise [s]
   int unfinished_this_update_ = 0;       ///< MclEstimate::look_alike_searches_unfinished, likewise
-  /// Since the filter last converged: a search ran out of budget with nothing found, and one
-  /// finished (MclEstimate::look_alike_unverified is the first without the second).
-  bool unfinished_since_convergence_ = false;
-  bool verified_ = false;
+  /// What the guard's searches since the filter last converged have established.
+  enum class ConvergenceCheck {
+    none,        ///< no search has finished, none ran out of budget with nothing found
+    unfinished,  ///< one ran out of budget with nothing found, none has finished since convergence
+    finished,    ///< one finished: the convergence is verified until the filter spreads out
+  };
+  /// MclEstimate::look_alike_unverified is `unfinished`.
+  ConvergenceCheck convergence_check_ = ConvergenceCheck::none;
   std::optional<RivalTest> rival_;      ///< a look-alike being weighed against the mean
   std::deque<RivalTest> rejected_;      ///< look-alikes the scans decided against, moved by odometry
   ScanHistory history_;                 ///< earlier scans a new look-alike is weighed on (guard's history_updates)
