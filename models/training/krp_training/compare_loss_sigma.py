@@ -1,7 +1,8 @@
 """The keypoint model trained with several OKS sigmas of its loss, side by side on one dataset.
 
 Every run gets the same dataset (krp-dataset with krp-train-map's defaults), the same training
-images, seed and epochs; only `KeypointParams.oks_sigma` differs. Each exported model is measured
+images, seed and epochs; only the sigma schedule differs: `KeypointParams.oks_sigma`, and a
+sharper `fine_oks_sigma` for the last `fine_epochs` epochs when a run names one. Each exported model is measured
 as krp-train-map measures it: ultralytics' validator (with ultralytics' own sigma, whatever the
 training sigma) and the error of observed keypoints, per landmark. Writes loss_sigma.json and
 LOSS_SIGMA.md into --out.
@@ -29,6 +30,29 @@ def _sigma_name(sigma: float) -> str:
     return "ultralytics' 1/K" if sigma == 0 else f"{sigma:g}"
 
 
+def _schedule_name(run: dict) -> str:
+    name = _sigma_name(run["oks_sigma"])
+    if run.get("fine_epochs", 0) > 0:
+        name += f", then {_sigma_name(run['fine_oks_sigma'])} for the last {run['fine_epochs']} epochs"
+    return name
+
+
+def parse_schedule(text: str) -> dict:
+    """'S' (sigma S throughout) or 'S:F:N' (S, then F for the last N epochs) -> the run's schedule."""
+    parts = text.split(":")
+    if len(parts) not in (1, 3):
+        raise ValueError(f"'{text}' is neither SIGMA nor SIGMA:FINE_SIGMA:FINE_EPOCHS")
+    schedule = {"oks_sigma": float(parts[0]), "fine_oks_sigma": 0.0, "fine_epochs": 0}
+    if len(parts) == 3:
+        schedule["fine_oks_sigma"] = float(parts[1])
+        schedule["fine_epochs"] = int(parts[2])
+        if schedule["fine_epochs"] < 1:
+            raise ValueError(f"'{text}': the fine epochs must be at least 1")
+    if not (schedule["oks_sigma"] >= 0 and schedule["fine_oks_sigma"] >= 0):
+        raise ValueError(f"'{text}': sigmas must be >= 0")
+    return schedule
+
+
 def markdown(result: dict) -> str:
     lines = [f"# Keypoint loss sigma: {result['world']}", "", f"Command: `{result['command']}`", "",
              f"Dataset: `{result['dataset_command']}`; {result['train_images']} training images, "
@@ -43,7 +67,7 @@ def markdown(result: dict) -> str:
         for s in EVAL_SPLITS:
             m, e = r[s], r[s]["keypoint_error"]
             names = ", ".join(e["unlearned_landmarks"]) or "none"
-            lines.append(f"| {_sigma_name(r['oks_sigma'])} | {s} | {_f(m['box']['map50'])} | {_f(m['pose']['map50'])} | "
+            lines.append(f"| {_schedule_name(r)} | {s} | {_f(m['box']['map50'])} | {_f(m['pose']['map50'])} | "
                          f"{_f(m['pose']['map50_95'])} | {_f(e['mean_error_m'])} m | {_f(e['median_error_m'])} m | "
                          f"{e['right_zone']} of {e['images']} | {len(e['unlearned_landmarks'])}: {names} | "
                          f"{r['seconds']:.0f} |")
@@ -54,7 +78,9 @@ def parse_args(argv):
     p = argparse.ArgumentParser(prog="compare_loss_sigma", description=__doc__.splitlines()[0])
     p.add_argument("--world", required=True)
     p.add_argument("--out", required=True, type=Path, help="folder for loss_sigma.json and LOSS_SIGMA.md")
-    p.add_argument("--sigmas", default="0,0.25", help="comma-separated OKS sigmas (0 = ultralytics' 1/K)")
+    p.add_argument("--sigmas", default="0,0.25",
+                   help="comma-separated runs, each an OKS sigma S (0 = ultralytics' 1/K) or S:F:N, sigma S "
+                        "and then F for the last N epochs")
     p.add_argument("--samples-per-zone", type=int, default=4000)
     p.add_argument("--changed-per-zone", type=int, default=150)
     p.add_argument("--keypoint-train-images", type=int, default=KEYPOINT_TRAIN_IMAGES)
@@ -63,11 +89,11 @@ def parse_args(argv):
     p.add_argument("--bin-dir", type=Path, default=DEFAULT_BIN_DIR)
     args = p.parse_args(argv)
     try:
-        args.sigmas = [float(s) for s in args.sigmas.split(",")]
-    except ValueError:
-        p.error(f"--sigmas: '{args.sigmas}' is not a comma-separated list of numbers")
-    if any(not s >= 0 for s in args.sigmas):
-        p.error(f"--sigmas must all be >= 0, not {args.sigmas}")
+        args.sigmas = [parse_schedule(s) for s in args.sigmas.split(",")]
+    except ValueError as e:
+        p.error(f"--sigmas: {e}")
+    if any(s["fine_epochs"] > args.epochs for s in args.sigmas):
+        p.error(f"--sigmas: a run's fine epochs exceed --epochs {args.epochs}")
     return args
 
 
@@ -85,17 +111,17 @@ def main(argv=None) -> int:
         img_px, res_m = int(card["submap"]["size_px"]), float(card["submap"]["resolution_m"])
         k = int(card["landmarks"]["keypoints_per_zone"])
         runs = []
-        for sigma in args.sigmas:
-            work = Path(tmp) / f"sigma_{sigma:g}"
+        for number, schedule in enumerate(args.sigmas):
+            work = Path(tmp) / f"run_{number}"
             work.mkdir()
             data_yaml, n_train = train_keypoints.limit_training_images(dataset / "keypoints" / "data.yaml", work,
                                                                        args.keypoint_train_images, args.seed)
             params = train_keypoints.KeypointParams(epochs=args.epochs, seed=args.seed,
-                                                    rotation_deg=max_rotation_deg(card), oks_sigma=sigma)
+                                                    rotation_deg=max_rotation_deg(card), **schedule)
             trained = train_keypoints.train(data_yaml, work, params, img_px)
             onnx = work / "keypoints.onnx"
             export.export_keypoints(trained.weights, img_px, onnx, work)
-            run = {"oks_sigma": sigma, "seconds": trained.seconds, "params": trained.params}
+            run = {**schedule, "seconds": trained.seconds, "params": trained.params}
             for s in EVAL_SPLITS:
                 run[s] = train_keypoints.evaluate(onnx, dataset / "keypoints", s, img_px, work)
                 run[s]["keypoint_error"] = keypoint_error.mean_keypoint_error(onnx, dataset, s, img_px, res_m, k, work,

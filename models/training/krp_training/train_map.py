@@ -70,6 +70,11 @@ def parse_args(argv):
     p.add_argument("--keypoint-loss-sigma", type=float, default=train_keypoints.KeypointParams.oks_sigma,
                    help="OKS sigma of the keypoint model's training loss (0 = ultralytics' 1/K; see "
                         "train_keypoints.KeypointParams.oks_sigma)")
+    p.add_argument("--keypoint-fine-sigma", type=float, default=train_keypoints.KeypointParams.fine_oks_sigma,
+                   help="a sharper OKS sigma for the keypoint model's last --keypoint-fine-epochs epochs "
+                        "(0 = ultralytics' 1/K; see train_keypoints.KeypointParams.fine_oks_sigma)")
+    p.add_argument("--keypoint-fine-epochs", type=int, default=train_keypoints.KeypointParams.fine_epochs,
+                   help="how many of the last --keypoint-epochs train with --keypoint-fine-sigma (0 = none)")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--device", default="auto", help="auto (GPU when there is one), cpu or cuda")
     p.add_argument("--bin-dir", default=str(DEFAULT_BIN_DIR), help="where the built C++ apps are")
@@ -82,6 +87,11 @@ def parse_args(argv):
         p.error(f"--strength must be >= 0 (0 = off), not {args.strength}")
     if not args.keypoint_loss_sigma >= 0:  # refused now, not after the dataset and the classifier
         p.error(f"--keypoint-loss-sigma must be >= 0 (0 = ultralytics' default), not {args.keypoint_loss_sigma}")
+    if not args.keypoint_fine_sigma >= 0:
+        p.error(f"--keypoint-fine-sigma must be >= 0 (0 = ultralytics' default), not {args.keypoint_fine_sigma}")
+    if not 0 <= args.keypoint_fine_epochs <= args.keypoint_epochs:
+        p.error(f"--keypoint-fine-epochs must be in [0, --keypoint-epochs = {args.keypoint_epochs}], "
+                f"not {args.keypoint_fine_epochs}")
     return args
 
 
@@ -205,7 +215,8 @@ def main(argv=None) -> int:
                         partial / "figures" / f"confusion_{s}.png")
 
     kp = train_keypoints.KeypointParams(epochs=args.keypoint_epochs, seed=args.seed, rotation_deg=rotation,
-                                        oks_sigma=args.keypoint_loss_sigma,
+                                        oks_sigma=args.keypoint_loss_sigma, fine_oks_sigma=args.keypoint_fine_sigma,
+                                        fine_epochs=args.keypoint_fine_epochs,
                                         device="0" if device == "cuda" else "cpu")
     img_px = int(card["submap"]["size_px"])
     with timer.stage("keypoints", rest["keypoints"] if rest else None):

@@ -1,5 +1,6 @@
 """The keypoint loss's OKS sigma goes into the yaml training reads, never into the dataset's own."""
 import math
+from types import SimpleNamespace
 
 import pytest
 import yaml
@@ -60,4 +61,61 @@ def test_the_comparison_refuses_bad_sigmas(sigmas, capsys):
 
     with pytest.raises(SystemExit):
         parse_args(["--world", "w", "--out", "o", "--sigmas", sigmas])
+    assert "--sigmas" in capsys.readouterr().err
+
+
+def _trainer_at(epoch):
+    model = SimpleNamespace(kpt_oks_sigmas=[0.25] * 3, criterion="built with 0.25")
+    return SimpleNamespace(epoch=epoch, model=model)
+
+
+def test_the_fine_sigma_takes_over_when_the_fine_epochs_begin():
+    from krp_training.train_keypoints import KeypointParams, _sharpen_sigma
+
+    switch = _sharpen_sigma(KeypointParams(epochs=10, oks_sigma=0.25, fine_oks_sigma=0.05, fine_epochs=3), nkpt=3)
+    before, first_fine = _trainer_at(6), _trainer_at(7)
+    switch(before)
+    switch(first_fine)
+    assert before.model.kpt_oks_sigmas == [0.25] * 3 and before.model.criterion == "built with 0.25"
+    assert first_fine.model.kpt_oks_sigmas == [0.05] * 3
+    assert first_fine.model.criterion is None  # rebuilt from the new sigmas on the next batch
+
+
+def test_ultralytics_builds_its_keypoint_loss_from_the_models_sigmas(tmp_path):
+    """What the switch relies on: a pose model's criterion, rebuilt, takes `kpt_oks_sigmas`."""
+    from krp_training import offline
+
+    offline.configure(tmp_path / "ultralytics-config")
+    from ultralytics.nn.tasks import PoseModel
+
+    model = PoseModel("yolov8n-pose.yaml", nc=1, data_kpt_shape=(3, 3), verbose=False)
+    model.args = SimpleNamespace(box=7.5, cls=0.5, dfl=1.5, pose=12.0, kobj=1.0)
+    model.kpt_oks_sigmas = [0.05] * 3
+    criterion = model.init_criterion()
+    assert criterion.keypoint_loss.sigmas.tolist() == pytest.approx([0.05] * 3)
+
+
+@pytest.mark.parametrize("params", [dict(epochs=10, fine_epochs=11), dict(epochs=10, fine_epochs=-1),
+                                    dict(fine_oks_sigma=-0.1), dict(oks_sigma=float("nan"))])
+def test_a_schedule_that_cannot_run_is_refused_before_training(params):
+    from krp_training.train_keypoints import KeypointParams, validate_sigma_schedule
+
+    with pytest.raises(ValueError, match="fine_epochs|sigma"):
+        validate_sigma_schedule(KeypointParams(**params))
+
+
+@pytest.mark.parametrize("text, schedule", [("0.25", (0.25, 0.0, 0)), ("0.25:0.0833:10", (0.25, 0.0833, 10))])
+def test_a_run_is_one_sigma_or_a_coarse_then_fine_schedule(text, schedule):
+    from krp_training.compare_loss_sigma import parse_schedule
+
+    s = parse_schedule(text)
+    assert (s["oks_sigma"], s["fine_oks_sigma"], s["fine_epochs"]) == schedule
+
+
+@pytest.mark.parametrize("sigmas", ["0.25:0.1", "0.25:0.1:0", "0.25:0.1:50"])
+def test_the_comparison_refuses_a_schedule_it_cannot_run(sigmas, capsys):
+    from krp_training.compare_loss_sigma import parse_args
+
+    with pytest.raises(SystemExit):
+        parse_args(["--world", "w", "--out", "o", "--epochs", "40", "--sigmas", sigmas])
     assert "--sigmas" in capsys.readouterr().err

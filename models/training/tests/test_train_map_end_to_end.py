@@ -90,6 +90,18 @@ def test_a_negative_keypoint_loss_sigma_is_refused_before_any_work(tmp_path, bin
     assert not (tmp_path / "work").exists() and not (tmp_path / "m.partial").exists()
 
 
+@pytest.mark.parametrize("flags, says", [
+    (["--keypoint-fine-sigma", "-0.1"], "--keypoint-fine-sigma must be >= 0"),
+    (["--keypoint-epochs", "10", "--keypoint-fine-epochs", "11"], "--keypoint-fine-epochs must be in [0, --keypoint-epochs = 10], not 11"),
+])
+def test_a_sigma_schedule_that_cannot_run_is_refused_before_any_work(tmp_path, bin_dir, capsys, flags, says):
+    with pytest.raises(SystemExit):
+        train_map.main(["--world", "office_two_zone", "--out", str(tmp_path / "m"), "--work-dir",
+                        str(tmp_path / "work"), "--bin-dir", str(bin_dir)] + flags)
+    assert says in capsys.readouterr().err
+    assert not (tmp_path / "work").exists() and not (tmp_path / "m.partial").exists()
+
+
 @pytest.mark.parametrize("flag, value, says", [
     ("--classifier-epochs", "0", "--classifier-epochs must be 1 or more, not 0"),
     ("--samples-per-zone", "-5", "--samples-per-zone must be 1 or more, not -5"),
