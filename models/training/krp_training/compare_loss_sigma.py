@@ -26,17 +26,6 @@ def _f(x, digits=3):
     return "n/a" if x is None else f"{x:.{digits}f}"
 
 
-def _sigma_name(sigma: float) -> str:
-    return "ultralytics' 1/K" if sigma == 0 else f"{sigma:g}"
-
-
-def _schedule_name(run: dict) -> str:
-    name = _sigma_name(run["oks_sigma"])
-    if run.get("fine_epochs", 0) > 0:
-        name += f", then {_sigma_name(run['fine_oks_sigma'])} for the last {run['fine_epochs']} epochs"
-    return name
-
-
 def parse_schedule(text: str) -> dict:
     """'S' (sigma S throughout) or 'S:F:N' (S, then F for the last N epochs) -> the run's schedule."""
     parts = text.split(":")
@@ -67,7 +56,7 @@ def markdown(result: dict) -> str:
         for s in EVAL_SPLITS:
             m, e = r[s], r[s]["keypoint_error"]
             names = ", ".join(e["unlearned_landmarks"]) or "none"
-            lines.append(f"| {_schedule_name(r)} | {s} | {_f(m['box']['map50'])} | {_f(m['pose']['map50'])} | "
+            lines.append(f"| {train_keypoints.sigma_schedule_name(r)} | {s} | {_f(m['box']['map50'])} | {_f(m['pose']['map50'])} | "
                          f"{_f(m['pose']['map50_95'])} | {_f(e['mean_error_m'])} m | {_f(e['median_error_m'])} m | "
                          f"{e['right_zone']} of {e['images']} | {len(e['unlearned_landmarks'])}: {names} | "
                          f"{r['seconds']:.0f} |")

@@ -9,6 +9,8 @@ import json
 import shutil
 from pathlib import Path
 
+from . import train_keypoints
+
 SIDE_RESULTS = ("comparison.json", "latency.json")
 
 
@@ -125,7 +127,9 @@ def _keypoint_training_line(m):
     seen = ""
     if "train_images" in k:
         seen = f" on {k['train_images']} of {m['classifier']['metrics']['images']['train']} training images"
-    return f"Training: {k['epochs']} epochs{seen}, {k['train_seconds']:.0f} s."
+    params = m.get("training", {}).get("keypoint_params")
+    sigma = f", loss sigma {train_keypoints.sigma_schedule_name(params)}" if params else ""
+    return f"Training: {k['epochs']} epochs{seen}{sigma}, {k['train_seconds']:.0f} s."
 
 
 def _latency_section(folder: Path, m, name: str):

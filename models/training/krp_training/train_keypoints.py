@@ -125,6 +125,17 @@ def with_loss_sigma(data_yaml: Path, work_dir: Path, sigma: float) -> Path:
     return out
 
 
+def sigma_schedule_name(params: dict) -> str:
+    """The loss sigma schedule of KeypointParams as a dict (as manifests record it), in words."""
+    def one(sigma):
+        return "ultralytics' 1/K" if sigma == 0 else f"{sigma:g}"
+
+    name = one(params.get("oks_sigma", 0.0))
+    if params.get("fine_epochs", 0) > 0:
+        name += f", then {one(params['fine_oks_sigma'])} for the last {params['fine_epochs']} epochs"
+    return name
+
+
 def validate_sigma_schedule(params: KeypointParams):
     """Refuses a schedule that cannot run, before any training."""
     for name in ("oks_sigma", "fine_oks_sigma"):

@@ -13,7 +13,8 @@ def test_tiny_train_and_export(tmp_path, bin_dir):
     out = tmp_path / "office_two_zone"  # a --models-root layout, so krp-bench can use it below
     rc = train_map.main(["--world", "office_two_zone", "--out", str(out), "--work-dir", str(tmp_path / "work"),
                          "--samples-per-zone", "12", "--changed-per-zone", "3", "--classifier-epochs", "1",
-                         "--keypoint-epochs", "1", "--bin-dir", str(bin_dir), "--device", "cpu"])
+                         "--keypoint-epochs", "2", "--keypoint-fine-sigma", "0.1", "--keypoint-fine-epochs", "1",
+                         "--bin-dir", str(bin_dir), "--device", "cpu"])
     assert rc == 0
     assert not (tmp_path / "office_two_zone.partial").exists()
     m = json.loads((out / "manifest.json").read_text())
@@ -46,6 +47,8 @@ def test_tiny_train_and_export(tmp_path, bin_dir):
     assert f"on {n_train} of {n_train} training images" in report
     # The keypoint loss's sigma is recorded, and every landmark's error is told apart.
     assert m["training"]["keypoint_params"]["oks_sigma"] == train_keypoints.KeypointParams.oks_sigma
+    assert (m["training"]["keypoint_params"]["fine_oks_sigma"], m["training"]["keypoint_params"]["fine_epochs"]) == (0.1, 1)
+    assert f"loss sigma {train_keypoints.KeypointParams.oks_sigma:g}, then 0.1 for the last 1 epochs" in report
     assert "per_landmark" in m["keypoints"]["metrics"]["test"]["keypoint_error"]
     assert "Landmarks not learned" in report
     # The classifier's test accuracy is told apart by distance to another zone; the bands count every image.
