@@ -42,12 +42,25 @@ class KeypointParams:
     # Coarse to fine: the last `fine_epochs` epochs train with this sharper sigma (0 = ultralytics'
     # 1/K). For small errors the loss is about d^2 / (8 sigma^2 area), so 0.25 weighs a keypoint's
     # last pixels 9 times less than 1/12 does: the broad bump finds every landmark, the sharp one
-    # then places it. 0 fine epochs: one sigma throughout.
+    # then places it. On the office dataset (600 images, 40 epochs, the same seed; the runs are
+    # identical up to the switch) 0.25 and then 1/12 for the last 10 epochs, against 0.25
+    # throughout: mean keypoint error 0.61 against 0.76 m, median 0.32 against 0.42 m, landmarks
+    # not learned 0 against 1, pose mAP@50 0.836 against 0.839
+    # (reports/keypoint_loss_sigma/office_two_zone_fine). 0 fine epochs: one sigma throughout.
     fine_oks_sigma: float = 0.0
-    fine_epochs: int = 0
+    fine_epochs: int = 10
     # Validating every epoch costs a third of a CPU epoch; the exported model is evaluated on the
     # held-out splits at the end anyway, so by default the last epoch's weights are kept.
     validate_each_epoch: bool = False
+
+
+# The share of the epochs that train with the fine sigma when a command does not say.
+FINE_EPOCHS_SHARE = 0.25
+
+
+def default_fine_epochs(epochs: int) -> int:
+    """KeypointParams.fine_epochs for `epochs` epochs: the last quarter (10 of the default 40)."""
+    return int(epochs * FINE_EPOCHS_SHARE)
 
 
 @dataclass

@@ -73,8 +73,9 @@ def parse_args(argv):
     p.add_argument("--keypoint-fine-sigma", type=float, default=train_keypoints.KeypointParams.fine_oks_sigma,
                    help="a sharper OKS sigma for the keypoint model's last --keypoint-fine-epochs epochs "
                         "(0 = ultralytics' 1/K; see train_keypoints.KeypointParams.fine_oks_sigma)")
-    p.add_argument("--keypoint-fine-epochs", type=int, default=train_keypoints.KeypointParams.fine_epochs,
-                   help="how many of the last --keypoint-epochs train with --keypoint-fine-sigma (0 = none)")
+    p.add_argument("--keypoint-fine-epochs", type=int,
+                   help="how many of the last --keypoint-epochs train with --keypoint-fine-sigma (0 = none; "
+                        "default: a quarter of them)")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--device", default="auto", help="auto (GPU when there is one), cpu or cuda")
     p.add_argument("--bin-dir", default=str(DEFAULT_BIN_DIR), help="where the built C++ apps are")
@@ -89,6 +90,8 @@ def parse_args(argv):
         p.error(f"--keypoint-loss-sigma must be >= 0 (0 = ultralytics' default), not {args.keypoint_loss_sigma}")
     if not args.keypoint_fine_sigma >= 0:
         p.error(f"--keypoint-fine-sigma must be >= 0 (0 = ultralytics' default), not {args.keypoint_fine_sigma}")
+    if args.keypoint_fine_epochs is None:
+        args.keypoint_fine_epochs = train_keypoints.default_fine_epochs(args.keypoint_epochs)
     if not 0 <= args.keypoint_fine_epochs <= args.keypoint_epochs:
         p.error(f"--keypoint-fine-epochs must be in [0, --keypoint-epochs = {args.keypoint_epochs}], "
                 f"not {args.keypoint_fine_epochs}")

@@ -119,3 +119,20 @@ def test_the_comparison_refuses_a_schedule_it_cannot_run(sigmas, capsys):
     with pytest.raises(SystemExit):
         parse_args(["--world", "w", "--out", "o", "--epochs", "40", "--sigmas", sigmas])
     assert "--sigmas" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("epochs, fine", [("40", 10), ("8", 2), ("3", 0)])
+def test_krp_train_map_sharpens_the_last_quarter_of_the_epochs_unless_told(epochs, fine):
+    from krp_training.train_keypoints import KeypointParams
+    from krp_training.train_map import parse_args
+
+    args = parse_args(["--world", "w", "--out", "o", "--keypoint-epochs", epochs])
+    assert args.keypoint_fine_epochs == fine
+    assert args.keypoint_fine_sigma == KeypointParams.fine_oks_sigma == 0.0  # ultralytics' 1/K
+    assert parse_args(["--world", "w", "--out", "o", "--keypoint-fine-epochs", "0"]).keypoint_fine_epochs == 0
+
+
+def test_the_params_default_schedule_is_the_commands_default():
+    from krp_training.train_keypoints import KeypointParams, default_fine_epochs
+
+    assert KeypointParams().fine_epochs == default_fine_epochs(KeypointParams().epochs) == 10
