@@ -2,10 +2,10 @@
 
 Every run gets the same dataset (krp-dataset with krp-train-map's defaults), the same training
 images, seed and epochs; only the sigma schedule differs: `KeypointParams.oks_sigma`, and a
-sharper `fine_oks_sigma` for the last `fine_epochs` epochs when a run names one. Each exported model is measured
-as krp-train-map measures it: ultralytics' validator (with ultralytics' own sigma, whatever the
-training sigma) and the error of observed keypoints, per landmark. Writes loss_sigma.json and
-LOSS_SIGMA.md into --out.
+sharper `fine_oks_sigma` for the last `fine_epochs` epochs when a run names one. Each exported
+model is measured as krp-train-map measures it: ultralytics' validator (with ultralytics' own
+sigma, whatever the training sigma) and the error of observed keypoints, per landmark. Writes
+loss_sigma.json and LOSS_SIGMA.md into --out.
 """
 import argparse
 import json

@@ -160,8 +160,9 @@ def validate_sigma_schedule(params: KeypointParams):
 
 
 def _sharpen_sigma(params: KeypointParams, nkpt: int):
-    """A callback that switches the keypoint loss to the fine sigma when the fine epochs begin. ultralytics builds its criterion from the model's
-    `kpt_oks_sigmas` on first use, so dropping the criterion makes it build one with the new value."""
+    """A callback that switches the keypoint loss to the fine sigma when the fine epochs begin.
+    ultralytics builds its criterion from the model's `kpt_oks_sigmas` on first use, so dropping
+    the criterion makes it build one with the new value."""
     first_fine_epoch = params.epochs - params.fine_epochs
 
     def callback(trainer):
