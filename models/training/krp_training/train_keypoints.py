@@ -9,11 +9,20 @@ import shutil
 import time
 from dataclasses import dataclass, asdict
 from pathlib import Path
+from typing import Optional
 
-import torch
 import yaml
 
 from . import offline
+
+
+# The share of the epochs that train with the fine sigma when a command does not say.
+FINE_EPOCHS_SHARE = 0.25
+
+
+def default_fine_epochs(epochs: int) -> int:
+    """KeypointParams.fine_epochs for `epochs` epochs: the last quarter (10 of the default 40)."""
+    return int(epochs * FINE_EPOCHS_SHARE)
 
 
 @dataclass
@@ -46,21 +55,17 @@ class KeypointParams:
     # identical up to the switch) 0.25 and then 1/12 for the last 10 epochs, against 0.25
     # throughout: mean keypoint error 0.61 against 0.76 m, median 0.32 against 0.42 m, landmarks
     # not learned 0 against 1, pose mAP@50 0.836 against 0.839
-    # (reports/keypoint_loss_sigma/office_two_zone_fine). 0 fine epochs: one sigma throughout.
+    # (reports/keypoint_loss_sigma/office_two_zone_fine). 0 fine epochs: one sigma throughout;
+    # None: default_fine_epochs(epochs).
     fine_oks_sigma: float = 0.0
-    fine_epochs: int = 10
+    fine_epochs: Optional[int] = None
     # Validating every epoch costs a third of a CPU epoch; the exported model is evaluated on the
     # held-out splits at the end anyway, so by default the last epoch's weights are kept.
     validate_each_epoch: bool = False
 
-
-# The share of the epochs that train with the fine sigma when a command does not say.
-FINE_EPOCHS_SHARE = 0.25
-
-
-def default_fine_epochs(epochs: int) -> int:
-    """KeypointParams.fine_epochs for `epochs` epochs: the last quarter (10 of the default 40)."""
-    return int(epochs * FINE_EPOCHS_SHARE)
+    def __post_init__(self):
+        if self.fine_epochs is None:
+            self.fine_epochs = default_fine_epochs(self.epochs)
 
 
 @dataclass
@@ -73,6 +78,8 @@ class KeypointResult:
 
 def _set_threads(threads: int):
     def callback(_trainer):
+        import torch  # here, not at the top: REPORT.md's writer imports this module and needs no torch
+
         torch.set_num_threads(threads)
 
     return callback
