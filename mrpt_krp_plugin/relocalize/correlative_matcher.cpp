@@ -193,10 +193,26 @@ double CorrelativeMatcher::scoreAt(const mrpt::obs::CObservation2DRangeScan& sca
 
 std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservation2DRangeScan& scan,
                                                      const MatchRequest& request) const {
-  const cv::Mat& region = request.region;
   nodes_scored_ = 0;
   nodes_stopped_early_ = 0;
   cut_short_ = false;
+  const int solutions = request.solutions.value_or(params_.solutions);
+  std::vector<MatchSolution> out;
+  if (request.leaf_penalty) {
+    // Each solution a search of its own, the ones found before excluded.
+    MatchRequest one = request;
+    one.solutions = 1;
+    for (int sol = 0; sol < solutions; ++sol) {
+      const auto search = startSearch(scan, one);
+      resume(*search, 0);
+      cut_short_ = cut_short_ || search->cutShort();
+      if (!search->solution()) break;
+      out.push_back(*search->solution());
+      one.excluded.emplace_back(out.back().pose.x, out.back().pose.y);
+    }
+    return out;
+  }
+  const cv::Mat& region = request.region;
   if (!region.empty() && (region.size() != free_.size() || region.type() != CV_8U))
     throw std::invalid_argument("CorrelativeMatcher::match: region not made by regionOf() for this map");
   // Region cells summed over any node's window in O(1): a node with none is never scored.
@@ -214,9 +230,8 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
   const int n_rot = std::max(1, static_cast<int>(std::lround(360.0 / params_.angular_step_deg)));
   for (int k = 0; k < n_rot; ++k) rotations.push_back(rotate(points, -M_PI + 2.0 * M_PI * k / n_rot));
 
-  std::vector<MatchSolution> out;
   const double bar = request.min_score.value_or(params_.min_score);
-  for (int sol = 0; sol < request.solutions.value_or(params_.solutions); ++sol) {
+  for (int sol = 0; sol < solutions; ++sol) {
     const Candidate candidate = [&](int cx, int cy) {
       if (cx >= free_.cols || cy >= free_.rows || !robotCellFree(cx, cy) || !in_region(cx, cy, 0)) return false;
       const auto at = poseOf(cx, cy, 0.0);
@@ -226,9 +241,7 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
         if (std::hypot(p.x - at.x, p.y - at.y) < params_.exclusion_m) return false;
       return true;
     };
-    const auto best = request.leaf_penalty ? searchBestFirst(rotations, bar, in_region, candidate, request.leaf_penalty,
-                                                             request.max_nodes_scored)
-                                           : searchDepthFirst(rotations, bar, in_region, candidate);
+    const auto best = searchDepthFirst(rotations, bar, in_region, candidate);
     if (!best) break;
     out.push_back(*best);
   }
@@ -330,61 +343,106 @@ std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vec
   return best;
 }
 
-std::optional<MatchSolution> CorrelativeMatcher::searchBestFirst(const std::vector<Rotation>& rotations, double bar,
-                                                                 const InRegion& in_region, const Candidate& candidate,
-                                                                 const LeafPenalty& leaf_penalty,
-                                                                 long long max_nodes) const {
-  // One queue over every rotation, highest bound first. A candidate's endpoint score bounds its
-  // charged score, so it is charged only when it reaches the top, and goes back in with the
-  // charge; a charged candidate at the top beats every bound left. Depth-first with a low bar
-  // would charge every candidate that clears the bar, most of which a better place outscores.
-  struct Entry {
-    double key;  ///< bound, or a charged candidate's score
-    int rotation;
-    Node node;
-    bool charged;
-    bool operator<(const Entry& o) const { return key < o.key; }
-  };
-  std::priority_queue<Entry> queue;
+bool CorrelativeMatcher::Search::inRegion(int cx, int cy, int level) const {
+  if (region_sum_.empty()) return true;
+  const int cols = region_sum_.cols - 1, rows = region_sum_.rows - 1;
+  const int x1 = std::min(cx + (1 << level), cols), y1 = std::min(cy + (1 << level), rows);
+  return region_sum_.at<int>(y1, x1) - region_sum_.at<int>(cy, x1) - region_sum_.at<int>(y1, cx) +
+             region_sum_.at<int>(cy, cx) > 0;
+}
+
+std::unique_ptr<CorrelativeMatcher::Search> CorrelativeMatcher::startSearch(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                                          const MatchRequest& request) const {
+  if (!request.leaf_penalty) throw std::invalid_argument("CorrelativeMatcher::startSearch: the request has no leaf_penalty");
+  if (request.solutions.value_or(params_.solutions) != 1)
+    throw std::invalid_argument("CorrelativeMatcher::startSearch: one solution per search");
+  const cv::Mat& region = request.region;
+  if (!region.empty() && (region.size() != free_.size() || region.type() != CV_8U))
+    throw std::invalid_argument("CorrelativeMatcher::match: region not made by regionOf() for this map");
+  auto search = std::unique_ptr<Search>(new Search());
+  search->request_ = request;
+  if (!region.empty()) cv::integral(region, search->region_sum_, CV_32S);
+  search->bar_ = request.min_score.value_or(params_.min_score);
+  const auto points = returns(scan);
+  if (points.size() < 3) {
+    search->finished_ = true;
+    return search;
+  }
+  const int n_rot = std::max(1, static_cast<int>(std::lround(360.0 / params_.angular_step_deg)));
+  for (int k = 0; k < n_rot; ++k) search->rotations_.push_back(rotate(points, -M_PI + 2.0 * M_PI * k / n_rot));
+  return search;
+}
+
+bool CorrelativeMatcher::resume(Search& s, long long max_nodes) const {
+  if (s.finished_) return true;
+  // Depth-first with a low bar would charge every candidate that clears the bar, most of which
+  // a better place outscores.
   const long long nodes_before = nodes_scored_;
-  // The best charged candidate so far: nothing that cannot beat it needs charging or expanding.
-  std::optional<Entry> best;
-  const auto floor = [&] { return best ? best->key : bar; };
-  TailSums tails;  // of every node queued, for its children's bounds
-  for (size_t k = 0; k < rotations.size(); ++k)
-    for (const auto& r : roots(rotations[k], in_region, bar, tails))
-      if (r.bound > bar) queue.push({r.bound, static_cast<int>(k), r, false});
-  const auto solution = [&](const Entry& e) {
-    return MatchSolution{poseOf(e.node.cx, e.node.cy, rotations[e.rotation].phi), e.key};
+  const auto scored = [&] { return s.nodes_ + (nodes_scored_ - nodes_before); };
+  const InRegion in_region = [&s](int cx, int cy, int level) { return s.inRegion(cx, cy, level); };
+  const auto solution = [&](const Search::Entry& e) {
+    return MatchSolution{poseOf(e.node.cx, e.node.cy, s.rotations_[e.rotation].phi), e.key};
   };
-  while (!queue.empty()) {
-    const Entry e = queue.top();
-    queue.pop();
-    if (e.charged) return solution(e);  // the top: it beats every bound left
-    if (e.key <= floor()) continue;      // queued before a better place was charged
-    if (max_nodes > 0 && nodes_scored_ - nodes_before >= max_nodes) {
-      // Out of budget: the best place charged so far is a true answer, maybe not the best.
-      cut_short_ = true;
-      return best ? std::optional<MatchSolution>(solution(*best)) : std::nullopt;
+  const auto finish = [&](std::optional<MatchSolution> answer) {
+    s.nodes_ = scored();
+    s.solution_ = std::move(answer);
+    s.finished_ = true;
+    s.queue_ = {};
+    s.tails_ = {};
+    return true;
+  };
+  if (!s.rooted_) {
+    for (size_t k = 0; k < s.rotations_.size(); ++k)
+      for (const auto& r : roots(s.rotations_[k], in_region, s.bar_, s.tails_))
+        if (r.bound > s.bar_) s.queue_.push({r.bound, static_cast<int>(k), r, false});
+    s.rooted_ = true;
+  }
+  const long long budget = s.request_.max_nodes_scored;
+  const long long slice_end = max_nodes > 0 ? scored() + max_nodes : 0;
+  while (!s.queue_.empty()) {
+    const Search::Entry& top = s.queue_.top();
+    if (top.charged) return finish(solution(top));  // the top: it beats every bound left
+    if (top.key <= s.floor()) {                      // queued before a better place was charged
+      s.queue_.pop();
+      continue;
     }
+    if (budget > 0 && scored() >= budget) {
+      // Out of budget: the best place charged so far is a true answer, maybe not the best.
+      s.cut_short_ = true;
+      return finish(s.best_ ? std::optional<MatchSolution>(solution(*s.best_)) : std::nullopt);
+    }
+    if (slice_end > 0 && scored() >= slice_end) {
+      s.nodes_ = scored();
+      return false;  // paused with this node still queued: the next slice starts from it
+    }
+    const Search::Entry e = top;
+    s.queue_.pop();
     const Node& n = e.node;
-    const Rotation& rot = rotations[e.rotation];
+    const Rotation& rot = s.rotations_[e.rotation];
     if (n.level == 0) {
-      if (!candidate(n.cx, n.cy)) continue;
-      const double penalty = leaf_penalty(poseOf(n.cx, n.cy, rot.phi), n.bound - floor());
+      if (!isCandidate(s, n.cx, n.cy)) continue;
+      const double penalty = s.request_.leaf_penalty(poseOf(n.cx, n.cy, rot.phi), n.bound - s.floor());
       if (!(penalty >= 0.0)) throw std::invalid_argument("CorrelativeMatcher::match: leaf_penalty must be >= 0");
-      if (n.bound - penalty > floor()) {
-        best = Entry{n.bound - penalty, e.rotation, n, true};
-        queue.push(*best);
+      if (n.bound - penalty > s.floor()) {
+        s.best_ = Search::Entry{n.bound - penalty, e.rotation, n, true};
+        s.queue_.push(*s.best_);
       }
       continue;
     }
     std::array<Node, 4> below;
-    const size_t count = children(rot, n, tails, in_region, floor(), tails, below);
+    const size_t count = children(rot, n, s.tails_, in_region, s.floor(), s.tails_, below);
     for (size_t i = 0; i < count; ++i)
-      if (below[i].bound > floor()) queue.push({below[i].bound, e.rotation, below[i], false});
+      if (below[i].bound > s.floor()) s.queue_.push({below[i].bound, e.rotation, below[i], false});
   }
-  return std::nullopt;
+  return finish(std::nullopt);
+}
+
+bool CorrelativeMatcher::isCandidate(const Search& s, int cx, int cy) const {
+  if (cx >= free_.cols || cy >= free_.rows || !robotCellFree(cx, cy) || !s.inRegion(cx, cy, 0)) return false;
+  const auto at = poseOf(cx, cy, 0.0);
+  for (const auto& p : s.request_.excluded)
+    if (std::hypot(p.x - at.x, p.y - at.y) < params_.exclusion_m) return false;
+  return true;
 }
 
 }  // namespace krp

@@ -11,7 +11,9 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
+#include <queue>
 #include <vector>
 
 #include "mrpt_krp_plugin/zones/zone.h"
@@ -81,6 +83,8 @@ struct MatchSolution {
 /// away from the first, says how ambiguous the scan is.
 class CorrelativeMatcher {
  public:
+  class Search;
+
   CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& map, CorrelativeMatcherParams params = {});
 
   /// The search grid's cells inside any of `zones` (CV_8U, 1 = searched): a region for match().
@@ -93,6 +97,18 @@ class CorrelativeMatcher {
   /// The score match() gives `pose` (same returns, same grid), without searching: how well the
   /// scan fits there in the matcher's own units.
   double scoreAt(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose) const;
+
+  /// A match() for one solution with a leaf_penalty, set up but not run: resume() runs it in
+  /// slices, so that a caller that must keep up with its scans (the filter's look-alike guard)
+  /// can spread a search that costs seconds over several of them. `scan` and `request` are
+  /// copied; what `request.leaf_penalty` refers to must outlive the search. Throws
+  /// std::invalid_argument without a leaf_penalty or with more than one solution asked.
+  std::unique_ptr<Search> startSearch(const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request) const;
+  /// Goes on with `search` for about `max_nodes` more nodes (0: to its end; its first slice
+  /// also bounds every root, and a slice ends within one node's children of the number); true
+  /// once it has finished. Sliced or not, a search scores the same nodes in the same order and
+  /// ends with the same answer, its request's max_nodes_scored counting every slice.
+  bool resume(Search& search, long long max_nodes) const;
 
   /// Nodes whose bound was computed in the last match() (a measure of its cost).
   long long lastNodesScored() const { return nodes_scored_; }
@@ -139,10 +155,8 @@ class CorrelativeMatcher {
   /// found so far (fast when nothing is charged beyond the endpoint score).
   std::optional<MatchSolution> searchDepthFirst(const std::vector<Rotation>& rotations, double bar,
                                                 const InRegion& in_region, const Candidate& candidate) const;
-  /// The same, every candidate charged `leaf_penalty`, expanding the highest bound first.
-  std::optional<MatchSolution> searchBestFirst(const std::vector<Rotation>& rotations, double bar,
-                                               const InRegion& in_region, const Candidate& candidate,
-                                               const LeafPenalty& leaf_penalty, long long max_nodes) const;
+  /// A cell a search's solution may stand on: free, in its region, away from its exclusions.
+  bool isCandidate(const Search& s, int cx, int cy) const;
   mrpt::math::TPose2D poseOf(int cx, int cy, double phi) const;  ///< a search-grid cell's centre, heading phi
   /// The scan's returns in the robot frame, evenly decimated to max_points.
   std::vector<mrpt::math::TPoint2D> returns(const mrpt::obs::CObservation2DRangeScan& scan) const;
@@ -177,6 +191,44 @@ class CorrelativeMatcher {
   mutable long long nodes_scored_ = 0;
   mutable long long nodes_stopped_early_ = 0;
   mutable bool cut_short_ = false;
+};
+
+/// One solution's best-first search, every candidate charged the request's leaf_penalty: the
+/// highest bound is expanded first, and a candidate is charged only when it reaches the top, then
+/// queued again with its charge, so a charged candidate at the top beats every bound left.
+/// Made by CorrelativeMatcher::startSearch, run by its resume().
+class CorrelativeMatcher::Search {
+ public:
+  bool finished() const { return finished_; }
+  /// Once finished: the best candidate scoring above the request's bar, if any.
+  const std::optional<MatchSolution>& solution() const { return solution_; }
+  /// It ended by running out of the request's max_nodes_scored: solution() is the best
+  /// candidate charged by then, a true answer but maybe not the best there is.
+  bool cutShort() const { return cut_short_; }
+  long long nodesScored() const { return nodes_; }  ///< over every slice so far
+
+ private:
+  friend class CorrelativeMatcher;
+  struct Entry {
+    double key;  ///< bound, or a charged candidate's score
+    int rotation;
+    Node node;
+    bool charged;
+    bool operator<(const Entry& o) const { return key < o.key; }
+  };
+  bool inRegion(int cx, int cy, int level) const;
+  double floor() const { return best_ ? best_->key : bar_; }  ///< what a node must beat
+
+  MatchRequest request_;
+  cv::Mat region_sum_;  ///< the region's integral image: region cells in any window in O(1)
+  std::vector<Rotation> rotations_;
+  double bar_ = 0.0;
+  std::priority_queue<Entry> queue_;
+  std::optional<Entry> best_;  ///< the best charged candidate so far
+  TailSums tails_;             ///< of every node queued, for its children's bounds
+  long long nodes_ = 0;
+  bool rooted_ = false, finished_ = false, cut_short_ = false;
+  std::optional<MatchSolution> solution_;
 };
 
 }  // namespace krp

@@ -290,5 +290,58 @@ TEST(CorrelativeMatcher, AChargedSearchOutOfBudgetSaysSoAndANegativeChargeIsRefu
   EXPECT_THROW(matcher.match(*scan, charging), std::invalid_argument);
 }
 
+// A charged search run in slices scores the same nodes and ends with the same answer as one run
+// at once, with and without a node budget, and a slice stops within one expansion of its size.
+TEST(CorrelativeMatcher, ASearchRunInSlicesEndsAsOneRunAtOnce) {
+  const auto map = bareRectangle();
+  const CorrelativeMatcher matcher(map);
+  const auto scan = scanAt(map, mrpt::poses::CPose2D(3.0, 2.5, 0.3));
+  MatchRequest charging;
+  charging.solutions = 1;
+  charging.excluded = {{3.0, 2.5}};  // as the look-alike guard asks: anywhere but here
+  charging.leaf_penalty = [](const mrpt::math::TPose2D& p, double) { return p.x < 4.5 ? 0.2 : 0.0; };
+  const auto whole = matcher.match(*scan, charging);
+  ASSERT_EQ(whole.size(), 1u);
+  const long long whole_nodes = matcher.lastNodesScored();
+  // The first slice bounds every root whatever its size; the rest are split into slices.
+  const auto probe = matcher.startSearch(*scan, charging);
+  ASSERT_FALSE(matcher.resume(*probe, 1));
+  const long long roots = probe->nodesScored();
+  ASSERT_LT(roots + 40, whole_nodes) << "the search should go on well past its roots";
+  const long long slice = (whole_nodes - roots) / 8;
+  for (const long long budget : {0LL, roots + (whole_nodes - roots) / 2}) {
+    charging.max_nodes_scored = budget;
+    const auto at_once = matcher.match(*scan, charging);
+    const long long at_once_nodes = matcher.lastNodesScored();
+    const bool at_once_cut = matcher.lastSearchCutShort();
+    const auto search = matcher.startSearch(*scan, charging);
+    int slices = 0;
+    long long before = 0;
+    while (!matcher.resume(*search, slice)) {
+      ++slices;
+      EXPECT_FALSE(search->finished());
+      // The first slice also bounds the roots; the others stop within one node's children.
+      if (slices > 1) EXPECT_LE(search->nodesScored() - before, slice + 4) << "slice " << slices;
+      before = search->nodesScored();
+    }
+    EXPECT_GE(slices, budget > 0 ? 3 : 7) << "budget " << budget;
+    EXPECT_TRUE(search->finished());
+    EXPECT_EQ(search->nodesScored(), at_once_nodes) << "budget " << budget;
+    EXPECT_EQ(search->cutShort(), at_once_cut) << "budget " << budget;
+    ASSERT_EQ(search->solution().has_value(), !at_once.empty()) << "budget " << budget;
+    if (!at_once.empty()) {
+      EXPECT_EQ(search->solution()->score, at_once[0].score);
+      EXPECT_EQ(search->solution()->pose.x, at_once[0].pose.x);
+      EXPECT_EQ(search->solution()->pose.y, at_once[0].pose.y);
+      EXPECT_EQ(search->solution()->pose.phi, at_once[0].pose.phi);
+    }
+    EXPECT_TRUE(matcher.resume(*search, slice)) << "a finished search stays finished";
+  }
+  // Resuming is for charged, one-solution searches; the others are refused when set up.
+  EXPECT_THROW(matcher.startSearch(*scan, MatchRequest{}), std::invalid_argument);
+  charging.solutions = 2;
+  EXPECT_THROW(matcher.startSearch(*scan, charging), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace krp
