@@ -28,6 +28,9 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
   if (params_.max_search_nodes < 0 || params_.max_search_nodes > LookAlikeGuardParams::kMaxSearchNodesLimit)
     throw std::invalid_argument("LookAlikeGuard: max_search_nodes must be 0 (no limit) to " +
                                 std::to_string(LookAlikeGuardParams::kMaxSearchNodesLimit));
+  if (params_.max_nodes_per_update < 0 || params_.max_nodes_per_update > LookAlikeGuardParams::kMaxSearchNodesLimit)
+    throw std::invalid_argument("LookAlikeGuard: max_nodes_per_update must be 0 (no limit) to " +
+                                std::to_string(LookAlikeGuardParams::kMaxSearchNodesLimit));
   if (params_.searches_per_update < 1) throw std::invalid_argument("LookAlikeGuard: searches_per_update must be at least 1");
   if (!(params_.min_fit_fraction >= 0.0 && params_.min_fit_fraction <= 1.0))
     throw std::invalid_argument("LookAlikeGuard: min_fit_fraction must be in [0, 1]");
@@ -48,23 +51,47 @@ double LookAlikeGuard::score(const mrpt::obs::CObservation2DRangeScan& scan, con
 LookAlikeSearch LookAlikeGuard::search(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
                                        const std::vector<mrpt::math::TPoint2D>& also_excluded,
                                        const SeeThroughPenalty::Scan* see_through) const {
-  LookAlike place;
-  place.tracked_score = score(scan, pose, see_through);
+  auto in_progress = startSearch(scan, pose, also_excluded, see_through);
+  return resume(*in_progress, 0);
+}
+
+long long LookAlikeSearchInProgress::nodesScored() const { return charged_ ? charged_->nodesScored() : 0; }
+
+std::unique_ptr<LookAlikeSearchInProgress> LookAlikeGuard::startSearch(
+    const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
+    const std::vector<mrpt::math::TPoint2D>& also_excluded, const SeeThroughPenalty::Scan* see_through) const {
+  std::unique_ptr<LookAlikeSearchInProgress> s(new LookAlikeSearchInProgress());
+  s->tracked_ = pose;
+  s->tracked_score_ = score(scan, pose, see_through);
   MatchRequest request;
-  request.min_score = lookAlikeBar(place.tracked_score);
+  request.min_score = lookAlikeBar(s->tracked_score_);
   request.solutions = 1;
   request.excluded = {{pose.x, pose.y}};  // the tracked place found again is no alternative to it
   request.excluded.insert(request.excluded.end(), also_excluded.begin(), also_excluded.end());
   request.max_nodes_scored = params_.max_search_nodes;
-  if (const auto* charged = searchCharge(see_through))
-    request.leaf_penalty = [charged](const mrpt::math::TPose2D& p, double enough) { return charged->shareUpTo(p, enough); };
+  if (const auto* charged = searchCharge(see_through)) {
+    s->see_through_ = std::make_unique<SeeThroughPenalty::Scan>(*charged);
+    const SeeThroughPenalty::Scan* owned = s->see_through_.get();
+    request.leaf_penalty = [owned](const mrpt::math::TPose2D& p, double enough) { return owned->shareUpTo(p, enough); };
+    s->charged_ = matcher_->startSearch(scan, request);
+    return s;
+  }
   const auto found = matcher_->match(scan, request);
+  s->uncharged_.cut_short = matcher_->lastSearchCutShort();
+  if (!found.empty()) s->uncharged_.found = LookAlike{found.front().pose, found.front().score, s->tracked_score_};
+  return s;
+}
+
+LookAlikeSearch LookAlikeGuard::resume(LookAlikeSearchInProgress& search, long long max_nodes) const {
+  if (!search.charged_) return search.uncharged_;
   LookAlikeSearch out;
-  out.cut_short = matcher_->lastSearchCutShort();
-  if (found.empty()) return out;
-  place.pose = found.front().pose;
-  place.score = found.front().score;
-  out.found = place;
+  if (!matcher_->resume(*search.charged_, max_nodes)) {
+    out.paused = true;
+    return out;
+  }
+  out.cut_short = search.charged_->cutShort();
+  if (const auto& found = search.charged_->solution())
+    out.found = LookAlike{found->pose, found->score, search.tracked_score_};
   return out;
 }
 

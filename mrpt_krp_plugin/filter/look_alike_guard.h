@@ -82,6 +82,15 @@ struct LookAlikeGuardParams {
   long long max_search_nodes = 4000000;
   /// The largest max_search_nodes accepted (days of one core): beyond it, 0 (no limit) says it.
   static constexpr long long kMaxSearchNodesLimit = 1000000000000LL;
+  /// One filter update scores at most about this many nodes of look-alike search; a search that
+  /// needs more pauses and goes on at the next updates (a place it finds is then moved along the
+  /// odometry since its scan and weighed on the current one), the estimate reading unverified
+  /// until one finishes. It keeps each tracking update within a bounded time where one search
+  /// costs seconds (a warehouse's racks with a long-range scanner), at the price of seeing a
+  /// look-alike a few updates later. Only charged searches (search_charges_see_through, with a
+  /// filter that charges see-through beams) pause; the others run whole. 0: every search runs to
+  /// its end in the update that starts it. At most kMaxSearchNodesLimit.
+  long long max_nodes_per_update = 0;
   RivalTestParams rival_test;  ///< how a look-alike that fits nearly as well is decided
   /// A look-alike found now is also weighed on this many earlier scans, each side moved back
   /// along the odometry to where a twin robot would have stood (ScanHistory): a place that fits
@@ -121,6 +130,28 @@ struct LookAlikeSearch {
   /// The search ran out of LookAlikeGuardParams::max_search_nodes before it had ruled out every
   /// place: `found` is a true look-alike when set, but when empty a look-alike may still exist.
   bool cut_short = false;
+  /// The search paused at its slice's end (LookAlikeGuard::resume): nothing is decided yet.
+  bool paused = false;
+};
+
+/// A look-alike search that may take several slices (LookAlikeGuardParams::max_nodes_per_update):
+/// it keeps its scan's see-through charge and the matcher's search state between them. Its
+/// answer is a place for the scan it started on; made by LookAlikeGuard::startSearch.
+class LookAlikeSearchInProgress {
+ public:
+  long long nodesScored() const;  ///< over every slice so far
+  /// The tracked pose the search started from, and its score on the search's scan.
+  const mrpt::math::TPose2D& tracked() const { return tracked_; }
+
+ private:
+  friend class LookAlikeGuard;
+  LookAlikeSearchInProgress() = default;
+  mrpt::math::TPose2D tracked_;
+  double tracked_score_ = 0.0;
+  /// Owned, so the charge outlives the update whose scan it was read from.
+  std::unique_ptr<SeeThroughPenalty::Scan> see_through_;
+  std::unique_ptr<CorrelativeMatcher::Search> charged_;  ///< a search that can pause
+  LookAlikeSearch uncharged_;                            ///< else the whole search's answer, found at once
 };
 
 class LookAlikeGuard {
@@ -149,6 +180,16 @@ class LookAlikeGuard {
   LookAlikeSearch search(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
                          const std::vector<mrpt::math::TPoint2D>& also_excluded = {},
                          const SeeThroughPenalty::Scan* see_through = nullptr) const;
+  /// search(), set up to run in slices by resume() (a search that charges no see-through runs
+  /// whole here and resume() hands its answer over). Copies what it needs of its arguments.
+  std::unique_ptr<LookAlikeSearchInProgress> startSearch(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                         const mrpt::math::TPose2D& pose,
+                                                         const std::vector<mrpt::math::TPoint2D>& also_excluded = {},
+                                                         const SeeThroughPenalty::Scan* see_through = nullptr) const;
+  /// Goes on with `search` for about `max_nodes` more nodes (0: to its end). Paused, or what
+  /// search() would have answered on the search's own scan; each slice's score and answer are
+  /// those of one search run at once (CorrelativeMatcher::resume).
+  LookAlikeSearch resume(LookAlikeSearchInProgress& search, long long max_nodes) const;
   /// It fits at least as well as the tracked pose (by score_margin): particles should move there.
   bool fitsAtLeastAsWell(const LookAlike& place) const {
     return place.score >= place.tracked_score - params_.score_margin;

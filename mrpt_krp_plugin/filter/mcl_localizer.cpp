@@ -151,14 +151,23 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
     converged_ = false;
     rival_.reset();
     rejected_.clear();
+    pending_.reset();
     convergence_check_ = ConvergenceCheck::none;
     return false;
   }
   const bool fresh = !converged_;
   converged_ = true;
+  if (pending_) {
+    // Its place is for the scan it started on: a twin robot there has moved as this one has.
+    pending_moved_ = pending_moved_ + increment;
+    pending_carried_ = true;
+  }
   watchRejected(scan, see_through, mean, increment);
   // Reopened on this scan's evidence, already counted: the estimate is ambiguous from now.
-  if (!rival_ && reopenRejected(scan, see_through, mean)) return false;
+  if (!rival_ && reopenRejected(scan, see_through, mean)) {
+    pending_.reset();  // the reopened place is weighed first; a later search starts afresh
+    return false;
+  }
   if (rival_) {
     rival_->move(increment);
     const auto verdict = rival_->update(*map_, scan, mean, see_through);
@@ -185,9 +194,14 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
     }
   }
   ++updates_since_check_;
-  const bool due = fresh || (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
+  const bool due = pending_ || fresh ||
+                   (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
   if (!due) return false;
   return searchForLookAlike(scan, see_through, mean, increment, fresh, gp.searches_per_update);
+}
+
+void MclLocalizer::pauseSearch() {
+  if (convergence_check_ != ConvergenceCheck::finished) convergence_check_ = ConvergenceCheck::unfinished;
 }
 
 bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
@@ -195,32 +209,61 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
                                       const mrpt::poses::CPose2D& increment, bool fresh, int searches) {
   const auto& gp = guard_->params();
   updates_since_check_ = 0;
+  const long long per_update = gp.max_nodes_per_update;  // 0: no limit
+  long long nodes_left = per_update;
   // A look-alike that loses at once is excluded and the search repeated, so that an estimate
   // reported unambiguous has no look-alike left, not merely one that just lost.
   for (int search = 0; search < searches; ++search) {
-    std::vector<mrpt::math::TPoint2D> excluded;
-    for (const auto& test : rejected_) excluded.emplace_back(test.rival().x, test.rival().y);
     const double t0 = threadCpuSeconds();
-    const auto result = guard_->search(scan, mean, excluded, see_through);
+    if (!pending_) {
+      std::vector<mrpt::math::TPoint2D> excluded;
+      for (const auto& test : rejected_) excluded.emplace_back(test.rival().x, test.rival().y);
+      pending_ = guard_->startSearch(scan, mean, excluded, see_through);
+      pending_moved_ = mrpt::poses::CPose2D();
+      pending_carried_ = false;
+      pending_fresh_ = fresh;
+    }
+    if (per_update > 0 && nodes_left <= 0) {
+      search_cpu_this_update_ += threadCpuSeconds() - t0;
+      pauseSearch();
+      return false;
+    }
+    const long long nodes_before = pending_->nodesScored();
+    const auto result = guard_->resume(*pending_, per_update > 0 ? nodes_left : 0);
+    nodes_left -= pending_->nodesScored() - nodes_before;
     search_cpu_this_update_ += threadCpuSeconds() - t0;
     ++searches_this_update_;
-    const auto& found = result.found;
+    if (result.paused) {
+      pauseSearch();
+      return false;
+    }
+    const bool carried = pending_carried_, started_fresh = pending_fresh_;
+    const auto moved = pending_moved_;
+    pending_.reset();
     if (!result.cut_short)
       convergence_check_ = ConvergenceCheck::finished;
-    else if (!found && convergence_check_ != ConvergenceCheck::finished)
+    else if (!result.found && convergence_check_ != ConvergenceCheck::finished)
       convergence_check_ = ConvergenceCheck::unfinished;
-    if (!found) {
+    if (!result.found) {
       if (result.cut_short) ++unfinished_this_update_;
       return false;
+    }
+    auto found = *result.found;
+    if (carried) {
+      // Found for an earlier scan: moved along the odometry since, and weighed on this one.
+      found.pose = (mrpt::poses::CPose2D(found.pose) + moved).asTPose();
+      if (guard_->samePlace(found.pose, mean)) continue;  // it slid onto the mean: no alternative
+      found.score = guard_->score(scan, found.pose, see_through);
+      found.tracked_score = guard_->score(scan, mean, see_through);
     }
     // A place that fits at least as well at a fresh convergence gets particles at once. Later,
     // and for places that fit a little worse, the scans that follow decide first: moving
     // particles at every check would keep a filter that is right from ever settling.
-    if (fresh && guard_->fitsAtLeastAsWell(*found)) {
-      moveShareOfParticlesTo(found->pose);
+    if (started_fresh && guard_->fitsAtLeastAsWell(found)) {
+      moveShareOfParticlesTo(found.pose);
       return true;
     }
-    rival_.emplace(history_.primedTest(found->pose, mean, increment, *map_, gp.rival_test));
+    rival_.emplace(history_.primedTest(found.pose, mean, increment, *map_, gp.rival_test));
     if (rival_->update(*map_, scan, mean, see_through) != RivalTest::Verdict::tracked_wins) return false;
     rememberRejected(*rival_);
     rival_.reset();
@@ -245,6 +288,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     convergence_check_ = ConvergenceCheck::none;
     rival_.reset();
     rejected_.clear();
+    pending_.reset();
     history_.clear();  // scans from before a re-seed may be from before a kidnap
   }
   auto action = step.action;
@@ -301,6 +345,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   e.look_alike_searches = searches_this_update_;
   e.look_alike_search_cpu_s = search_cpu_this_update_;
   e.look_alike_searches_unfinished = unfinished_this_update_;
+  e.look_alike_search_pending = pending_ != nullptr;
   e.cpu_s = threadCpuSeconds() - t0;
   return e;
 }

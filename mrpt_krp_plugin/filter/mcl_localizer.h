@@ -63,6 +63,9 @@ struct MclEstimate {
   /// guard's node budget: nothing rules out a look-alike place, and with the guard's
   /// unverified_is_unsettled `cov` is widened so the pose reads unsettled.
   bool look_alike_unverified = false;
+  /// A look-alike search paused at the guard's max_nodes_per_update and goes on at the next
+  /// update (the estimate reads unverified meanwhile, unless a search since convergence finished).
+  bool look_alike_search_pending = false;
 };
 
 /// MRPT's CMonteCarloLocalization2D driven step by step, with the start chosen by a
@@ -114,6 +117,9 @@ class MclLocalizer {
   bool searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const SeeThroughPenalty::Scan* see_through,
                           const mrpt::math::TPose2D& mean, const mrpt::poses::CPose2D& increment, bool fresh,
                           int searches);
+  /// The search in progress paused: it goes on at the next update, and until a search since
+  /// the filter converged has finished, the estimate is unverified.
+  void pauseSearch();
   /// Leaves the rival of `test` out of later searches, and keeps it under watch when the guard
   /// says so (the oldest beyond the guard's memory is forgotten).
   void rememberRejected(RivalTest test);
@@ -157,6 +163,11 @@ class MclLocalizer {
   };
   /// MclEstimate::look_alike_unverified is `unfinished`.
   ConvergenceCheck convergence_check_ = ConvergenceCheck::none;
+  /// A look-alike search paused at the guard's max_nodes_per_update, to go on at the next update.
+  std::unique_ptr<LookAlikeSearchInProgress> pending_;
+  mrpt::poses::CPose2D pending_moved_;  ///< odometry since the pending search's scan
+  bool pending_carried_ = false;        ///< it has been carried over to a later update
+  bool pending_fresh_ = false;          ///< it started at a fresh convergence
   std::optional<RivalTest> rival_;      ///< a look-alike being weighed against the mean
   std::deque<RivalTest> rejected_;      ///< look-alikes the scans decided against, moved by odometry
   ScanHistory history_;                 ///< earlier scans a new look-alike is weighed on (guard's history_updates)

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
 #include <cmath>
@@ -13,6 +15,7 @@
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
 #include "mrpt_krp_plugin/filter/sensor_model.h"
+#include "mrpt_krp_plugin/filter/see_through.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/relocalize/relocalizer.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
@@ -506,6 +509,106 @@ TEST(LookAlikeGuard, AConvergenceNoSearchCouldFinishCheckingIsReportedUnverified
 
 TEST(LookAlikeGuard, RefusesASearchBudgetOutsideItsRange) {
   expectRefusedOutsideZeroTo(&LookAlikeGuardParams::max_search_nodes, LookAlikeGuardParams::kMaxSearchNodesLimit);
+}
+
+TEST(LookAlikeGuard, RefusesAPerUpdateBudgetOutsideItsRange) {
+  expectRefusedOutsideZeroTo(&LookAlikeGuardParams::max_nodes_per_update, LookAlikeGuardParams::kMaxSearchNodesLimit);
+}
+
+// A search set up to run in slices owns its scan's see-through charge (the scan's may be gone
+// by the next slice) and ends with what one search run at once finds.
+TEST(LookAlikeGuard, ASearchInSlicesFindsWhatOneSearchFinds) {
+  const auto room = std::make_shared<mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  const LookAlikeGuard guard(std::make_shared<CorrelativeMatcher>(*room), withAmbiguityMargin(0.0));
+  const SeeThroughPenalty penalty(*room, SensorModelParams{});
+  const auto scan = scanAtTruth(*room, 1);
+  std::unique_ptr<LookAlikeSearchInProgress> sliced;
+  LookAlikeSearch whole;
+  {
+    const auto see_through = penalty.forScan(*scan);
+    whole = guard.search(*scan, kTwin, {}, &see_through);
+    sliced = guard.startSearch(*scan, kTwin, {}, &see_through);
+  }
+  ASSERT_TRUE(whole.found.has_value());
+  EXPECT_LT(distance(whole.found->pose, kTruth), 0.2);
+  int paused = 0;
+  LookAlikeSearch last;
+  while ((last = guard.resume(*sliced, 200)).paused) ++paused;
+  EXPECT_GE(paused, 2) << "a budget of 200 nodes a slice should pause the search";
+  ASSERT_TRUE(last.found.has_value());
+  EXPECT_EQ(last.found->pose.x, whole.found->pose.x);
+  EXPECT_EQ(last.found->pose.y, whole.found->pose.y);
+  EXPECT_EQ(last.found->pose.phi, whole.found->pose.phi);
+  EXPECT_EQ(last.found->score, whole.found->score);
+  EXPECT_EQ(last.found->tracked_score, whole.found->tracked_score);
+  EXPECT_EQ(last.cut_short, whole.cut_short);
+}
+
+/// A filter step holding `scan` and the odometry `increment` since the last step.
+RawlogStep stepWithScanAndMotion(mrpt::obs::CObservation2DRangeScan::Ptr scan, const mrpt::poses::CPose2D& increment) {
+  auto step = stepWithScan(std::move(scan));
+  step.action = mrpt::obs::CActionCollection::Create();
+  mrpt::obs::CActionRobotMovement2D move;
+  move.computeFromOdometry(increment, OdometryModelParams{}.toMrpt());
+  step.action->insert(move);
+  return step;
+}
+
+// The guard's search spread over updates (max_nodes_per_update): while it runs, the estimate
+// reads unverified; when it ends, the place it found for the scan it started on is moved along
+// the odometry since, so that the look-alike reported is the twin of where the robot is now,
+// not of where it was. The same filter with whole searches reports that twin at once.
+TEST(LookAlikeGuard, ASearchSpreadOverUpdatesReportsTheLookAlikeOfWhereTheRobotIsNow) {
+  const auto room = std::make_shared<mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  const auto matcher = std::make_shared<CorrelativeMatcher>(*room);
+  const auto twinOf = [](const mrpt::math::TPose2D& p) {
+    return mrpt::math::TPose2D(9.0 - p.x, 7.0 - p.y, mrpt::math::wrapToPi(p.phi + M_PI));
+  };
+  const mrpt::poses::CPose2D step_forward(0.25, 0.0, 0.0);
+  auto run = [&](long long nodes_per_update, std::vector<MclEstimate>* estimates) {
+    auto params = withAmbiguityMargin(kTwinShortfallBound);
+    params.rival_test.decisive_log_ratio = 1e9;  // the twin stays undecided: reported every update
+    params.max_nodes_per_update = nodes_per_update;
+    MclLocalizer loc(room, std::make_shared<OnePoseInitializer>(kTruth));
+    loc.setLookAlikeGuard(std::make_shared<LookAlikeGuard>(matcher, params));
+    mrpt::poses::CPose2D truth(kTruth);
+    std::vector<mrpt::math::TPose2D> path;
+    for (uint64_t i = 0; i < 8; ++i) {
+      const mrpt::poses::CPose2D increment = i == 0 ? mrpt::poses::CPose2D() : step_forward;
+      truth = truth + increment;
+      path.push_back(truth.asTPose());
+      Rng rng(80 + i);
+      const auto scan = ScanSimulator(lidarProfileByName("omni_12m")).simulate(*room, truth, rng);
+      estimates->push_back(loc.update(stepWithScanAndMotion(scan, increment)));
+    }
+    return path;
+  };
+  std::vector<MclEstimate> whole;
+  const auto path = run(0, &whole);
+  ASSERT_TRUE(whole.front().ambiguous_with.has_value()) << "a whole search reports the twin at once";
+  EXPECT_LT(distance(*whole.front().ambiguous_with, twinOf(path.front())), 0.3);
+  EXPECT_FALSE(whole.front().look_alike_search_pending);
+
+  // A few thousand nodes an update: the search of the first scan (some 17,000) takes several.
+  std::vector<MclEstimate> sliced;
+  run(4000, &sliced);
+  size_t reported = sliced.size();
+  for (size_t i = 0; i < sliced.size(); ++i)
+    if (sliced[i].ambiguous_with) {
+      reported = i;
+      break;
+    }
+  ASSERT_LT(reported, sliced.size()) << "the search should end within the run";
+  ASSERT_GE(reported, 2u) << "the search should have paused at least twice";
+  for (size_t i = 0; i < reported; ++i) {
+    EXPECT_TRUE(sliced[i].look_alike_search_pending) << "update " << i;
+    EXPECT_TRUE(sliced[i].look_alike_unverified) << "update " << i;
+    EXPECT_FALSE(isConcentrated(filterSpread(sliced[i].cov), {})) << "unverified reads unsettled, update " << i;
+  }
+  EXPECT_FALSE(sliced[reported].look_alike_search_pending);
+  const auto& place = *sliced[reported].ambiguous_with;
+  EXPECT_LT(distance(place, twinOf(path[reported])), 0.3) << "the twin of where the robot is now";
+  EXPECT_GT(distance(twinOf(path.front()), twinOf(path[reported])), 0.7) << "the robot moved well away meanwhile";
 }
 
 }  // namespace
