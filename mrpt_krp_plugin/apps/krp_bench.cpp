@@ -85,6 +85,10 @@ static int run(int argc, char** argv) {
                 {"guard-max-search-nodes", "N", "methods with the look-alike guard: nodes one look-alike search charged "
                  "for see-through may score before it answers with the best place charged so far (0 = no limit)",
                  std::to_string(krp::LookAlikeGuardParams{}.max_search_nodes)},
+                {"guard-nodes-per-update", "N", "methods with the look-alike guard: nodes of look-alike search one "
+                 "filter update may score; a search charged for see-through that needs more pauses and goes on at the "
+                 "next updates, the pose reading unverified meanwhile (0 = every search runs to its end at once)",
+                 std::to_string(krp::LookAlikeGuardParams{}.max_nodes_per_update)},
                 {"guard-unverified-is-settled", "", "methods with the look-alike guard: a converged filter whose "
                  "look-alike searches all ran out of --guard-max-search-nodes with nothing found reads as settled, "
                  "not widened (LookAlikeGuardParams::unverified_is_unsettled false; the guard before it)", ""},
@@ -190,6 +194,8 @@ static int run(int argc, char** argv) {
       args.integerInRange("guard-recheck-every", 0, krp::LookAlikeGuardParams::kMaxRecheckEveryUpdates));
   cfg.method_settings.guard.max_search_nodes =
       args.integerInRange("guard-max-search-nodes", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
+  cfg.method_settings.guard.max_nodes_per_update =
+      args.integerInRange("guard-nodes-per-update", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
   cfg.method_settings.guard.unverified_is_unsettled = !args.flag("guard-unverified-is-settled");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,
                                   cfg.method_settings.matcher);

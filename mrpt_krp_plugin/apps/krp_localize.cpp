@@ -253,6 +253,10 @@ static int run(int argc, char** argv) {
                  "score (0 = no limit); a converged filter whose searches all ran out of it with nothing found is "
                  "reported unverified, its std widened (raise it for a large map)",
                  std::to_string(krp::LookAlikeGuardParams{}.max_search_nodes)},
+                {"guard-nodes-per-update", "N", "methods with the look-alike guard: nodes of look-alike search one "
+                 "update may score; a search that needs more pauses and goes on at the next updates, the pose "
+                 "reported unverified meanwhile, so no update stalls on a large map (0 = each search runs to its end)",
+                 std::to_string(krp::LookAlikeGuardParams{}.max_nodes_per_update)},
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"ground-truth", "FILE", "ground truth 'step x y phi' (optional)", ""},
                 {"out-dir", "DIR", "output folder", "out/localize"},
@@ -288,6 +292,7 @@ static int run(int argc, char** argv) {
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
   ms.guard.recheck_every_updates = static_cast<int>(toWholeNumber(s, "guard_recheck_every", 0, krp::LookAlikeGuardParams::kMaxRecheckEveryUpdates));
   ms.guard.max_search_nodes = toWholeNumber(s, "guard_max_search_nodes", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
+  ms.guard.max_nodes_per_update = toWholeNumber(s, "guard_nodes_per_update", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
   const bool every_scan = s["single_scan"] == "all";
   const auto single_scan = every_scan ? 0L : static_cast<long>(toWholeNumber(s, "single_scan", -1, kMaxStep));
   const auto stride = static_cast<long>(toWholeNumber(s, "single_scan_stride", 1, kMaxStep));
@@ -366,7 +371,12 @@ static int run(int argc, char** argv) {
   if (e.scan_unexplained)
     sum << "unsettled: the map explains only " << e.fit_fraction
         << " of the last scan's returns (clutter?); the std above is widened\n";
-  if (e.look_alike_unverified)
+  if (e.look_alike_unverified && e.look_alike_search_pending)
+    sum << "unverified: no look-alike search since the filter converged has finished; one is still running, "
+        << "spread over updates (--guard-nodes-per-update " << ms.guard.max_nodes_per_update
+        << "), so nothing rules out a look-alike place yet"
+        << (ms.guard.unverified_is_unsettled ? "; the std above is widened" : "") << "\n";
+  else if (e.look_alike_unverified)
     sum << "unverified: every look-alike search since the filter converged ran out of its node budget "
         << "(--guard-max-search-nodes " << ms.guard.max_search_nodes
         << ") with nothing found, so nothing rules out a look-alike place"

@@ -28,4 +28,14 @@ std::string unverifiedPoseNote(long long max_search_nodes, bool widened) {
   return s.str();
 }
 
+std::string pendingSearchNote(long long max_nodes_per_update, bool widened) {
+  std::ostringstream s;
+  s << "pose unverified: no look-alike search since the filter converged has finished yet; one is running, "
+       "look_alike_max_nodes_per_update ("
+    << max_nodes_per_update << ") nodes per update, so nothing rules out a look-alike place yet"
+    << (widened ? "; the published covariance is widened" : "; look_alike_unverified_is_unsettled is off, so the "
+                                                               "published covariance is not widened");
+  return s.str();
+}
+
 }  // namespace krp::ros1

@@ -21,4 +21,9 @@ std::optional<std::string> guardCostNote(double search_cpu_s, int searches, doub
 /// published covariance is widened (`widened`: look_alike_unverified_is_unsettled).
 std::string unverifiedPoseNote(long long max_search_nodes, bool widened);
 
+/// The same while the reason is a search still running, spread over updates at
+/// `max_nodes_per_update` nodes each (MclEstimate::look_alike_search_pending): no search since
+/// the filter converged has finished yet.
+std::string pendingSearchNote(long long max_nodes_per_update, bool widened);
+
 }  // namespace krp::ros1

@@ -111,6 +111,7 @@ const std::map<std::string, Reader>& readers() {
       {"look_alike_refit_charges_see_through", boolean(&NodeParams::look_alike_refit_charges_see_through)},
       {"look_alike_rival_refinements", integer(&NodeParams::look_alike_rival_refinements, 0, kMaxRivalRefinements)},
       {"look_alike_max_search_nodes", integer(&NodeParams::look_alike_max_search_nodes, 0, kMaxSearchNodes)},
+      {"look_alike_max_nodes_per_update", integer(&NodeParams::look_alike_max_nodes_per_update, 0, kMaxSearchNodes)},
       {"look_alike_history_updates", integer(&NodeParams::look_alike_history_updates, 0, kMaxHistoryUpdates)},
       {"look_alike_recheck_every_updates", integer(&NodeParams::look_alike_recheck_every_updates, 0,
                                                            LookAlikeGuardParams::kMaxRecheckEveryUpdates)},
@@ -204,6 +205,7 @@ LookAlikeGuardParams NodeParams::lookAlikeGuard() const {
   g.rival_test.refit_charges_see_through = look_alike_refit_charges_see_through;
   g.rival_test.finer_refinements = look_alike_rival_refinements;
   g.max_search_nodes = look_alike_max_search_nodes;
+  g.max_nodes_per_update = look_alike_max_nodes_per_update;
   g.history_updates = look_alike_history_updates;
   g.recheck_every_updates = look_alike_recheck_every_updates;
   return g;

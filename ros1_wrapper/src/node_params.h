@@ -78,6 +78,13 @@ struct NodeParams {
   /// `track`: nodes one charged look-alike search may score before it answers with the best place
   /// charged so far (0 = no limit; LookAlikeGuardParams::max_search_nodes)
   int look_alike_max_search_nodes = static_cast<int>(LookAlikeGuardParams{}.max_search_nodes);
+  /// `track`: nodes of look-alike search one filter update may score; a charged search that needs
+  /// more pauses and goes on at the next updates, the pose published as unverified meanwhile, so
+  /// that no update stalls the tracking on a large map (0 = each search runs to its end at once;
+  /// LookAlikeGuardParams::max_nodes_per_update). The node's default differs from the library's:
+  /// a live robot must keep up with its scans, a log replayed offline need not.
+  int look_alike_max_nodes_per_update = kNodeMaxNodesPerUpdate;
+  static constexpr int kNodeMaxNodesPerUpdate = 500000;
   /// `track`: a converged pose whose look-alike searches all ran out of that budget with nothing
   /// found is published with a widened covariance (LookAlikeGuardParams::unverified_is_unsettled)
   bool look_alike_unverified_is_unsettled = LookAlikeGuardParams{}.unverified_is_unsettled;

@@ -437,7 +437,9 @@ void RelocalizerNode::track(TrackJob& job) {
       << " % of the scan's returns are explained by the map (clutter?); the published covariance is widened";
     report(s.str(), true);
   }
-  if (u->estimate.look_alike_unverified)
+  if (u->estimate.look_alike_unverified && u->estimate.look_alike_search_pending)
+    report(pendingSearchNote(params_.look_alike_max_nodes_per_update, params_.look_alike_unverified_is_unsettled), true);
+  else if (u->estimate.look_alike_unverified)
     report(unverifiedPoseNote(params_.look_alike_max_search_nodes, params_.look_alike_unverified_is_unsettled), true);
   geometry_msgs::PoseArray cloud;
   cloud.header = header;

@@ -28,5 +28,13 @@ TEST(GuardCostNote, AnUnverifiedPoseNamesTheBudgetAndWhetherTheCovarianceIsWiden
   EXPECT_NE(flagged.find("is not widened"), std::string::npos) << flagged;
 }
 
+TEST(GuardCostNote, APoseUnverifiedWhileASearchRunsSaysSoAndNamesThePerUpdateBudget) {
+  const auto widened = pendingSearchNote(500000, true);
+  EXPECT_NE(widened.find("one is running"), std::string::npos) << widened;
+  EXPECT_NE(widened.find("look_alike_max_nodes_per_update (500000)"), std::string::npos) << widened;
+  EXPECT_NE(widened.find("the published covariance is widened"), std::string::npos) << widened;
+  EXPECT_NE(pendingSearchNote(7, false).find("is not widened"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace krp::ros1

@@ -46,6 +46,7 @@ TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
   EXPECT_EQ(doc["look_alike_refit_charges_see_through"].as<bool>(), d.look_alike_refit_charges_see_through);
   EXPECT_EQ(doc["look_alike_rival_refinements"].as<int>(), d.look_alike_rival_refinements);
   EXPECT_EQ(doc["look_alike_max_search_nodes"].as<int>(), d.look_alike_max_search_nodes);
+  EXPECT_EQ(doc["look_alike_max_nodes_per_update"].as<int>(), d.look_alike_max_nodes_per_update);
   EXPECT_EQ(doc["look_alike_history_updates"].as<int>(), d.look_alike_history_updates);
   EXPECT_EQ(doc["look_alike_recheck_every_updates"].as<int>(), d.look_alike_recheck_every_updates);
   EXPECT_DOUBLE_EQ(doc["transform_tolerance_s"].as<double>(), d.transform_tolerance_s);
@@ -76,6 +77,8 @@ TEST(RosNodeParams, TheGuardGetsTheChargeSwitchesAndItsBudget) {
   EXPECT_TRUE(p.lookAlikeGuard().rival_test.refit_charges_see_through);
   EXPECT_EQ(p.lookAlikeGuard().max_search_nodes, LookAlikeGuardParams{}.max_search_nodes);
   EXPECT_EQ(p.lookAlikeGuard().rival_test.finer_refinements, RivalTestParams{}.finer_refinements);
+  EXPECT_EQ(p.lookAlikeGuard().max_nodes_per_update, NodeParams::kNodeMaxNodesPerUpdate);
+  EXPECT_GT(NodeParams::kNodeMaxNodesPerUpdate, 0) << "a live robot's updates must not stall on one search";
   EXPECT_EQ(p.lookAlikeGuard().history_updates, 0);
   EXPECT_EQ(p.lookAlikeGuard().recheck_every_updates, LookAlikeGuardParams{}.recheck_every_updates);
   p.look_alike_history_updates = 10;
@@ -84,6 +87,7 @@ TEST(RosNodeParams, TheGuardGetsTheChargeSwitchesAndItsBudget) {
   p.look_alike_refit_charges_see_through = false;
   p.look_alike_rival_refinements = 0;
   p.look_alike_max_search_nodes = 0;
+  p.look_alike_max_nodes_per_update = 0;
   p.look_alike_unverified_is_unsettled = false;
   const auto g = p.lookAlikeGuard();
   EXPECT_FALSE(g.unverified_is_unsettled);
@@ -91,6 +95,7 @@ TEST(RosNodeParams, TheGuardGetsTheChargeSwitchesAndItsBudget) {
   EXPECT_FALSE(g.rival_test.refit_charges_see_through);
   EXPECT_EQ(g.rival_test.finer_refinements, 0);
   EXPECT_EQ(g.max_search_nodes, 0);
+  EXPECT_EQ(g.max_nodes_per_update, 0);
   EXPECT_EQ(g.history_updates, 10);
   EXPECT_EQ(g.recheck_every_updates, 5);
 }
