@@ -158,7 +158,7 @@ class MclLocalizer {
   /// What the guard's searches since the filter last converged have established.
   enum class ConvergenceCheck {
     none,        ///< no search has finished, none ran out of budget with nothing found
-    unfinished,  ///< one ran out of budget with nothing found, none has finished since convergence
+    unfinished,  ///< one ran out of budget with nothing found, or is paused, and none has finished since convergence
     finished,    ///< one finished: the convergence is verified until the filter spreads out
   };
   /// MclEstimate::look_alike_unverified is `unfinished`.
