@@ -190,23 +190,27 @@ bool MclLocalizer::guardConvergence(const mrpt::obs::CObservation2DRangeScan& sc
       // In a corridor many places tie: the one that lost may not be the last look-alike. It
       // counts as one of the look-alikes weighed in this update.
       return gp.searches_per_update > 1 &&
-             searchForLookAlike(scan, see_through, mean, increment, fresh, gp.searches_per_update - 1);
+             searchForLookAlike(scan, see_through, mean, increment, fresh, gp.searches_per_update - 1, true);
     }
   }
   ++updates_since_check_;
   const bool due = pending_ || fresh ||
                    (gp.recheck_every_updates > 0 && updates_since_check_ >= gp.recheck_every_updates);
   if (!due) return false;
-  return searchForLookAlike(scan, see_through, mean, increment, fresh, gp.searches_per_update);
+  return searchForLookAlike(scan, see_through, mean, increment, fresh, gp.searches_per_update, false);
 }
 
 void MclLocalizer::pauseSearch() {
-  if (convergence_check_ != ConvergenceCheck::finished) convergence_check_ = ConvergenceCheck::unfinished;
+  // A search that follows a look-alike which just lost is looking for the next one: until it
+  // ends, nothing says none is left (a whole search would have answered in this update).
+  if (pending_after_loss_ || convergence_check_ != ConvergenceCheck::finished)
+    convergence_check_ = ConvergenceCheck::unfinished;
 }
 
 bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan,
                                       const SeeThroughPenalty::Scan* see_through, const mrpt::math::TPose2D& mean,
-                                      const mrpt::poses::CPose2D& increment, bool fresh, int searches) {
+                                      const mrpt::poses::CPose2D& increment, bool fresh, int searches,
+                                      bool after_loss) {
   const auto& gp = guard_->params();
   updates_since_check_ = 0;
   const long long per_update = gp.max_nodes_per_update;  // 0: no limit
@@ -222,6 +226,7 @@ bool MclLocalizer::searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& 
       pending_moved_ = mrpt::poses::CPose2D();
       pending_carried_ = false;
       pending_fresh_ = fresh;
+      pending_after_loss_ = after_loss || search > 0;
     }
     if (per_update > 0 && nodes_left <= 0) {
       search_cpu_this_update_ += threadCpuSeconds() - t0;

@@ -113,12 +113,13 @@ class MclLocalizer {
                         const mrpt::poses::CPose2D& increment);
   /// The guard's search for a look-alike of `mean`, repeated while the ones found lose at once,
   /// `searches` times at most; true when particles were moved. `fresh`: the filter converged at
-  /// this update.
+  /// this update; `after_loss`: a look-alike has just lost its test, so this looks for the next.
   bool searchForLookAlike(const mrpt::obs::CObservation2DRangeScan& scan, const SeeThroughPenalty::Scan* see_through,
                           const mrpt::math::TPose2D& mean, const mrpt::poses::CPose2D& increment, bool fresh,
-                          int searches);
-  /// The search in progress paused: it goes on at the next update, and until a search since
-  /// the filter converged has finished, the estimate is unverified.
+                          int searches, bool after_loss);
+  /// The search in progress paused: it goes on at the next update. Until a search since the
+  /// filter converged has finished, or while this one looks for the next look-alike after one
+  /// lost, the estimate is unverified.
   void pauseSearch();
   /// Leaves the rival of `test` out of later searches, and keeps it under watch when the guard
   /// says so (the oldest beyond the guard's memory is forgotten).
@@ -168,6 +169,7 @@ class MclLocalizer {
   mrpt::poses::CPose2D pending_moved_;  ///< odometry since the pending search's scan
   bool pending_carried_ = false;        ///< it has been carried over to a later update
   bool pending_fresh_ = false;          ///< it started at a fresh convergence
+  bool pending_after_loss_ = false;     ///< it started because a look-alike had just lost its test
   std::optional<RivalTest> rival_;      ///< a look-alike being weighed against the mean
   std::deque<RivalTest> rejected_;      ///< look-alikes the scans decided against, moved by odometry
   ScanHistory history_;                 ///< earlier scans a new look-alike is weighed on (guard's history_updates)
