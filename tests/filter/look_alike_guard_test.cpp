@@ -611,5 +611,30 @@ TEST(LookAlikeGuard, ASearchSpreadOverUpdatesReportsTheLookAlikeOfWhereTheRobotI
   EXPECT_GT(distance(twinOf(path.front()), twinOf(path[reported])), 0.7) << "the robot moved well away meanwhile";
 }
 
+// Spread over updates, the search that follows a look-alike which just lost its test is looking
+// for the next one: while it runs, the pose reads unverified even though the search that found
+// the loser finished (a whole search would have answered in that update). Without this rule a
+// warehouse trial ended confidently wrong (reports/guard_budget).
+TEST(LookAlikeGuard, WhileTheSearchForTheNextLookAlikeRunsThePoseIsUnverified) {
+  const auto room = std::make_shared<mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  auto params = withAmbiguityMargin(kTwinShortfallBound);  // the twin is a look-alike that loses at once
+  params.max_nodes_per_update = 4000;                      // a search of this room takes several updates
+  MclLocalizer loc(room, std::make_shared<OnePoseInitializer>(kTruth));
+  loc.setLookAlikeGuard(std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(*room), params));
+  int checked = 0, verified = 0;
+  for (uint64_t i = 0; i < 12; ++i) {
+    const auto e = loc.update(stepWithScan(scanAtTruth(*room, 90 + i)));
+    verified += !e.look_alike_unverified;
+    // Two searches in one update: the first ended (its look-alike lost at once), the next began.
+    if (e.look_alike_searches >= 2 && e.look_alike_search_pending) {
+      EXPECT_TRUE(e.look_alike_unverified) << "update " << i;
+      EXPECT_FALSE(isConcentrated(filterSpread(e.cov), {})) << "update " << i;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0) << "the twin should be found and lose at once within the run";
+  EXPECT_GT(verified, 0) << "the search after it should end, and verify the pose, within the run";
+}
+
 }  // namespace
 }  // namespace krp
