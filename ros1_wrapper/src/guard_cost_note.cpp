@@ -6,6 +6,14 @@
 
 namespace krp::ros1 {
 
+namespace {
+/// How an unverified pose is published, as the notes end.
+const char* covarianceClause(bool widened) {
+  return widened ? "; the published covariance is widened"
+                 : "; look_alike_unverified_is_unsettled is off, so the published covariance is not widened";
+}
+}  // namespace
+
 std::optional<std::string> guardCostNote(double search_cpu_s, int searches, double scan_interval_s,
                                          int recheck_every_updates) {
   if (searches <= 0 || !(scan_interval_s > 0.0) || search_cpu_s <= scan_interval_s) return std::nullopt;
@@ -23,8 +31,7 @@ std::string unverifiedPoseNote(long long max_search_nodes, bool widened) {
   s << "pose unverified: every look-alike search since the filter converged ran out of "
        "look_alike_max_search_nodes ("
     << max_search_nodes << ") with nothing found, so nothing rules out a look-alike place"
-    << (widened ? "; the published covariance is widened" : "; look_alike_unverified_is_unsettled is off, so the "
-                                                               "published covariance is not widened");
+    << covarianceClause(widened);
   return s.str();
 }
 
@@ -33,8 +40,7 @@ std::string pendingSearchNote(long long max_nodes_per_update, bool widened) {
   s << "pose unverified: no look-alike search since the filter converged has finished yet; one is running, "
        "look_alike_max_nodes_per_update ("
     << max_nodes_per_update << ") nodes per update, so nothing rules out a look-alike place yet"
-    << (widened ? "; the published covariance is widened" : "; look_alike_unverified_is_unsettled is off, so the "
-                                                               "published covariance is not widened");
+    << covarianceClause(widened);
   return s.str();
 }
 

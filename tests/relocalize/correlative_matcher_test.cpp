@@ -267,13 +267,19 @@ TEST(CorrelativeMatcher, ABoundThatStopsEarlyChangesTheCostNotTheSearch) {
 
 // A search out of its node budget answers with the best place it charged, which is no better
 // than the exact answer, and says that it was cut short; a negative charge is refused.
+/// One solution, every place west of x = 4.5 m charged 0.2: a charge that moves the answer.
+MatchRequest chargedWestOfMiddle() {
+  MatchRequest charging;
+  charging.solutions = 1;
+  charging.leaf_penalty = [](const mrpt::math::TPose2D& p, double) { return p.x < 4.5 ? 0.2 : 0.0; };
+  return charging;
+}
+
 TEST(CorrelativeMatcher, AChargedSearchOutOfBudgetSaysSoAndANegativeChargeIsRefused) {
   const auto map = bareRectangle();
   const CorrelativeMatcher matcher(map);
   const auto scan = scanAt(map, mrpt::poses::CPose2D(3.0, 2.5, 0.3));
-  MatchRequest charging;
-  charging.solutions = 1;
-  charging.leaf_penalty = [](const mrpt::math::TPose2D& p, double) { return p.x < 4.5 ? 0.2 : 0.0; };
+  auto charging = chargedWestOfMiddle();
   const auto exact = matcher.match(*scan, charging);
   ASSERT_EQ(exact.size(), 1u);
   EXPECT_FALSE(matcher.lastSearchCutShort());
@@ -296,10 +302,8 @@ TEST(CorrelativeMatcher, ASearchRunInSlicesEndsAsOneRunAtOnce) {
   const auto map = bareRectangle();
   const CorrelativeMatcher matcher(map);
   const auto scan = scanAt(map, mrpt::poses::CPose2D(3.0, 2.5, 0.3));
-  MatchRequest charging;
-  charging.solutions = 1;
+  auto charging = chargedWestOfMiddle();
   charging.excluded = {{3.0, 2.5}};  // as the look-alike guard asks: anywhere but here
-  charging.leaf_penalty = [](const mrpt::math::TPose2D& p, double) { return p.x < 4.5 ? 0.2 : 0.0; };
   const auto whole = matcher.match(*scan, charging);
   ASSERT_EQ(whole.size(), 1u);
   const long long whole_nodes = matcher.lastNodesScored();
