@@ -3,14 +3,16 @@
 
 #include <iomanip>
 #include <sstream>
+#include <string>
 
 namespace krp::ros1 {
 
 namespace {
-/// How an unverified pose is published, as the notes end.
-const char* covarianceClause(bool widened) {
-  return widened ? "; the published covariance is widened"
-                 : "; look_alike_unverified_is_unsettled is off, so the published covariance is not widened";
+/// "pose unverified: <why>", and how the pose is published.
+std::string unverifiedNote(const std::string& why, bool widened) {
+  return "pose unverified: " + why +
+         (widened ? "; the published covariance is widened"
+                  : "; look_alike_unverified_is_unsettled is off, so the published covariance is not widened");
 }
 }  // namespace
 
@@ -27,21 +29,18 @@ std::optional<std::string> guardCostNote(double search_cpu_s, int searches, doub
 }
 
 std::string unverifiedPoseNote(long long max_search_nodes, bool widened) {
-  std::ostringstream s;
-  s << "pose unverified: every look-alike search since the filter converged ran out of "
-       "look_alike_max_search_nodes ("
-    << max_search_nodes << ") with nothing found, so nothing rules out a look-alike place"
-    << covarianceClause(widened);
-  return s.str();
+  return unverifiedNote("every look-alike search since the filter converged ran out of look_alike_max_search_nodes (" +
+                            std::to_string(max_search_nodes) +
+                            ") with nothing found, so nothing rules out a look-alike place",
+                        widened);
 }
 
 std::string pendingSearchNote(long long max_nodes_per_update, bool widened) {
-  std::ostringstream s;
-  s << "pose unverified: no look-alike search since the filter converged has finished yet; one is running, "
-       "look_alike_max_nodes_per_update ("
-    << max_nodes_per_update << ") nodes per update, so nothing rules out a look-alike place yet"
-    << covarianceClause(widened);
-  return s.str();
+  return unverifiedNote(
+      "no look-alike search since the filter converged has finished yet; one is running, "
+      "look_alike_max_nodes_per_update (" +
+          std::to_string(max_nodes_per_update) + ") nodes per update, so nothing rules out a look-alike place yet",
+      widened);
 }
 
 }  // namespace krp::ros1
