@@ -61,7 +61,6 @@ std::unique_ptr<LookAlikeSearchInProgress> LookAlikeGuard::startSearch(
     const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
     const std::vector<mrpt::math::TPoint2D>& also_excluded, const SeeThroughPenalty::Scan* see_through) const {
   std::unique_ptr<LookAlikeSearchInProgress> s(new LookAlikeSearchInProgress());
-  s->tracked_ = pose;
   s->tracked_score_ = score(scan, pose, see_through);
   MatchRequest request;
   request.min_score = lookAlikeBar(s->tracked_score_);

@@ -140,14 +140,11 @@ struct LookAlikeSearch {
 class LookAlikeSearchInProgress {
  public:
   long long nodesScored() const;  ///< over every slice so far
-  /// The tracked pose the search started from, and its score on the search's scan.
-  const mrpt::math::TPose2D& tracked() const { return tracked_; }
 
  private:
   friend class LookAlikeGuard;
   LookAlikeSearchInProgress() = default;
-  mrpt::math::TPose2D tracked_;
-  double tracked_score_ = 0.0;
+  double tracked_score_ = 0.0;  ///< the tracked pose's score on the search's scan
   /// Owned, so the charge outlives the update whose scan it was read from.
   std::unique_ptr<SeeThroughPenalty::Scan> see_through_;
   std::unique_ptr<CorrelativeMatcher::Search> charged_;  ///< a search that can pause

@@ -100,8 +100,8 @@ class CorrelativeMatcher {
 
   /// A match() for one solution with a leaf_penalty, set up but not run: resume() runs it in
   /// slices, so that a caller that must keep up with its scans (the filter's look-alike guard)
-  /// can spread a search that costs seconds over several of them. `scan` and `request` are
-  /// copied; what `request.leaf_penalty` refers to must outlive the search. Throws
+  /// can spread a search that costs seconds over several of them. It keeps copies of what it
+  /// needs of `scan` and `request`; what `request.leaf_penalty` refers to must outlive it. Throws
   /// std::invalid_argument without a leaf_penalty or with more than one solution asked.
   std::unique_ptr<Search> startSearch(const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request) const;
   /// Goes on with `search` for about `max_nodes` more nodes (0: to its end; its first slice
@@ -142,7 +142,6 @@ class CorrelativeMatcher {
   using TailSums = std::vector<float>;
   using InRegion = std::function<bool(int cx, int cy, int level)>;
   using Candidate = std::function<bool(int cx, int cy)>;  ///< a cell a solution may stand on
-  using LeafPenalty = std::function<double(const mrpt::math::TPose2D& pose, double enough)>;
 
   /// The coarsest nodes over the search grid that hold any of the region, bounded for `rot`
   /// (those that cannot beat `cutoff` marked kPruned).
