@@ -212,38 +212,20 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
     }
     return out;
   }
-  const cv::Mat& region = request.region;
-  if (!region.empty() && (region.size() != free_.size() || region.type() != CV_8U))
-    throw std::invalid_argument("CorrelativeMatcher::match: region not made by regionOf() for this map");
-  // Region cells summed over any node's window in O(1): a node with none is never scored.
-  cv::Mat region_sum;
-  if (!region.empty()) cv::integral(region, region_sum, CV_32S);
-  const InRegion in_region = [&](int cx, int cy, int level) {
-    if (region.empty()) return true;
-    const int x1 = std::min(cx + (1 << level), region.cols), y1 = std::min(cy + (1 << level), region.rows);
-    return region_sum.at<int>(y1, x1) - region_sum.at<int>(cy, x1) - region_sum.at<int>(y1, cx) +
-               region_sum.at<int>(cy, cx) > 0;
-  };
+  const cv::Mat region_sum = regionSum(request.region);
+  const InRegion in_region = [&](int cx, int cy, int level) { return windowHoldsRegion(region_sum, cx, cy, level); };
   const auto points = returns(scan);
   if (points.size() < 3) return {};
-  std::vector<Rotation> rotations;
-  const int n_rot = std::max(1, static_cast<int>(std::lround(360.0 / params_.angular_step_deg)));
-  for (int k = 0; k < n_rot; ++k) rotations.push_back(rotate(points, -M_PI + 2.0 * M_PI * k / n_rot));
+  const auto rotations = rotationsOf(points);
 
   const double bar = request.min_score.value_or(params_.min_score);
+  auto excluded = request.excluded;  // and every solution found, as each search ends
   for (int sol = 0; sol < solutions; ++sol) {
-    const Candidate candidate = [&](int cx, int cy) {
-      if (cx >= free_.cols || cy >= free_.rows || !robotCellFree(cx, cy) || !in_region(cx, cy, 0)) return false;
-      const auto at = poseOf(cx, cy, 0.0);
-      for (const auto& o : out)
-        if (std::hypot(o.pose.x - at.x, o.pose.y - at.y) < params_.exclusion_m) return false;
-      for (const auto& p : request.excluded)
-        if (std::hypot(p.x - at.x, p.y - at.y) < params_.exclusion_m) return false;
-      return true;
-    };
+    const Candidate candidate = [&](int cx, int cy) { return isCandidate(cx, cy, region_sum, excluded); };
     const auto best = searchDepthFirst(rotations, bar, in_region, candidate);
     if (!best) break;
     out.push_back(*best);
+    excluded.emplace_back(best->pose.x, best->pose.y);
   }
   return out;
 }
@@ -343,12 +325,29 @@ std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vec
   return best;
 }
 
-bool CorrelativeMatcher::Search::inRegion(int cx, int cy, int level) const {
-  if (region_sum_.empty()) return true;
-  const int cols = region_sum_.cols - 1, rows = region_sum_.rows - 1;
+bool CorrelativeMatcher::windowHoldsRegion(const cv::Mat& region_sum, int cx, int cy, int level) {
+  if (region_sum.empty()) return true;
+  const int cols = region_sum.cols - 1, rows = region_sum.rows - 1;
   const int x1 = std::min(cx + (1 << level), cols), y1 = std::min(cy + (1 << level), rows);
-  return region_sum_.at<int>(y1, x1) - region_sum_.at<int>(cy, x1) - region_sum_.at<int>(y1, cx) +
-             region_sum_.at<int>(cy, cx) > 0;
+  return region_sum.at<int>(y1, x1) - region_sum.at<int>(cy, x1) - region_sum.at<int>(y1, cx) +
+             region_sum.at<int>(cy, cx) > 0;
+}
+
+cv::Mat CorrelativeMatcher::regionSum(const cv::Mat& region) const {
+  if (region.empty()) return {};
+  if (region.size() != free_.size() || region.type() != CV_8U)
+    throw std::invalid_argument("CorrelativeMatcher::match: region not made by regionOf() for this map");
+  cv::Mat sum;
+  cv::integral(region, sum, CV_32S);
+  return sum;
+}
+
+std::vector<CorrelativeMatcher::Rotation> CorrelativeMatcher::rotationsOf(
+    const std::vector<mrpt::math::TPoint2D>& points) const {
+  std::vector<Rotation> rotations;
+  const int n_rot = std::max(1, static_cast<int>(std::lround(360.0 / params_.angular_step_deg)));
+  for (int k = 0; k < n_rot; ++k) rotations.push_back(rotate(points, -M_PI + 2.0 * M_PI * k / n_rot));
+  return rotations;
 }
 
 std::unique_ptr<CorrelativeMatcher::Search> CorrelativeMatcher::startSearch(const mrpt::obs::CObservation2DRangeScan& scan,
@@ -356,30 +355,28 @@ std::unique_ptr<CorrelativeMatcher::Search> CorrelativeMatcher::startSearch(cons
   if (!request.leaf_penalty) throw std::invalid_argument("CorrelativeMatcher::startSearch: the request has no leaf_penalty");
   if (request.solutions.value_or(params_.solutions) != 1)
     throw std::invalid_argument("CorrelativeMatcher::startSearch: one solution per search");
-  const cv::Mat& region = request.region;
-  if (!region.empty() && (region.size() != free_.size() || region.type() != CV_8U))
-    throw std::invalid_argument("CorrelativeMatcher::match: region not made by regionOf() for this map");
   auto search = std::unique_ptr<Search>(new Search());
   search->request_ = request;
-  if (!region.empty()) cv::integral(region, search->region_sum_, CV_32S);
+  search->region_sum_ = regionSum(request.region);
   search->bar_ = request.min_score.value_or(params_.min_score);
   const auto points = returns(scan);
   if (points.size() < 3) {
     search->finished_ = true;
     return search;
   }
-  const int n_rot = std::max(1, static_cast<int>(std::lround(360.0 / params_.angular_step_deg)));
-  for (int k = 0; k < n_rot; ++k) search->rotations_.push_back(rotate(points, -M_PI + 2.0 * M_PI * k / n_rot));
+  search->rotations_ = rotationsOf(points);
   return search;
 }
 
 bool CorrelativeMatcher::resume(Search& s, long long max_nodes) const {
   if (s.finished_) return true;
-  // Depth-first with a low bar would charge every candidate that clears the bar, most of which
-  // a better place outscores.
+  // Best first, not depth first: with a low bar, depth first would charge every candidate that
+  // clears the bar, most of which a better place outscores.
   const long long nodes_before = nodes_scored_;
   const auto scored = [&] { return s.nodes_ + (nodes_scored_ - nodes_before); };
-  const InRegion in_region = [&s](int cx, int cy, int level) { return s.inRegion(cx, cy, level); };
+  const InRegion in_region = [&s](int cx, int cy, int level) {
+    return windowHoldsRegion(s.region_sum_, cx, cy, level);
+  };
   const auto solution = [&](const Search::Entry& e) {
     return MatchSolution{poseOf(e.node.cx, e.node.cy, s.rotations_[e.rotation].phi), e.key};
   };
@@ -420,7 +417,7 @@ bool CorrelativeMatcher::resume(Search& s, long long max_nodes) const {
     const Node& n = e.node;
     const Rotation& rot = s.rotations_[e.rotation];
     if (n.level == 0) {
-      if (!isCandidate(s, n.cx, n.cy)) continue;
+      if (!isCandidate(n.cx, n.cy, s.region_sum_, s.request_.excluded)) continue;
       const double penalty = s.request_.leaf_penalty(poseOf(n.cx, n.cy, rot.phi), n.bound - s.floor());
       if (!(penalty >= 0.0)) throw std::invalid_argument("CorrelativeMatcher::match: leaf_penalty must be >= 0");
       if (n.bound - penalty > s.floor()) {
@@ -437,10 +434,12 @@ bool CorrelativeMatcher::resume(Search& s, long long max_nodes) const {
   return finish(std::nullopt);
 }
 
-bool CorrelativeMatcher::isCandidate(const Search& s, int cx, int cy) const {
-  if (cx >= free_.cols || cy >= free_.rows || !robotCellFree(cx, cy) || !s.inRegion(cx, cy, 0)) return false;
+bool CorrelativeMatcher::isCandidate(int cx, int cy, const cv::Mat& region_sum,
+                                     const std::vector<mrpt::math::TPoint2D>& excluded) const {
+  if (cx >= free_.cols || cy >= free_.rows || !robotCellFree(cx, cy) || !windowHoldsRegion(region_sum, cx, cy, 0))
+    return false;
   const auto at = poseOf(cx, cy, 0.0);
-  for (const auto& p : s.request_.excluded)
+  for (const auto& p : excluded)
     if (std::hypot(p.x - at.x, p.y - at.y) < params_.exclusion_m) return false;
   return true;
 }

@@ -154,8 +154,16 @@ class CorrelativeMatcher {
   /// found so far (fast when nothing is charged beyond the endpoint score).
   std::optional<MatchSolution> searchDepthFirst(const std::vector<Rotation>& rotations, double bar,
                                                 const InRegion& in_region, const Candidate& candidate) const;
-  /// A cell a search's solution may stand on: free, in its region, away from its exclusions.
-  bool isCandidate(const Search& s, int cx, int cy) const;
+  /// A cell a solution may stand on: free, in the region (regionSum's; empty: anywhere) and at
+  /// least exclusion_m from each of `excluded`.
+  bool isCandidate(int cx, int cy, const cv::Mat& region_sum, const std::vector<mrpt::math::TPoint2D>& excluded) const;
+  /// The integral image of a region from regionOf() (empty for none); throws
+  /// std::invalid_argument for one made for another map.
+  cv::Mat regionSum(const cv::Mat& region) const;
+  /// Whether a node's window (level `level` at cx, cy) holds any of the region, in O(1).
+  static bool windowHoldsRegion(const cv::Mat& region_sum, int cx, int cy, int level);
+  /// The returns turned to every heading of the search (angular_step_deg apart).
+  std::vector<Rotation> rotationsOf(const std::vector<mrpt::math::TPoint2D>& points) const;
   mrpt::math::TPose2D poseOf(int cx, int cy, double phi) const;  ///< a search-grid cell's centre, heading phi
   /// The scan's returns in the robot frame, evenly decimated to max_points.
   std::vector<mrpt::math::TPoint2D> returns(const mrpt::obs::CObservation2DRangeScan& scan) const;
@@ -215,7 +223,6 @@ class CorrelativeMatcher::Search {
     bool charged;
     bool operator<(const Entry& o) const { return key < o.key; }
   };
-  bool inRegion(int cx, int cy, int level) const;
   double floor() const { return best_ ? best_->key : bar_; }  ///< what a node must beat
 
   MatchRequest request_;
