@@ -371,16 +371,18 @@ static int run(int argc, char** argv) {
   if (e.scan_unexplained)
     sum << "unsettled: the map explains only " << e.fit_fraction
         << " of the last scan's returns (clutter?); the std above is widened\n";
-  if (e.look_alike_unverified && e.look_alike_search_pending)
-    sum << "unverified: no look-alike search since the filter converged has finished; one is still running, "
-        << "spread over updates (--guard-nodes-per-update " << ms.guard.max_nodes_per_update
-        << "), so nothing rules out a look-alike place yet"
-        << (ms.guard.unverified_is_unsettled ? "; the std above is widened" : "") << "\n";
-  else if (e.look_alike_unverified)
-    sum << "unverified: every look-alike search since the filter converged ran out of its node budget "
-        << "(--guard-max-search-nodes " << ms.guard.max_search_nodes
-        << ") with nothing found, so nothing rules out a look-alike place"
-        << (ms.guard.unverified_is_unsettled ? "; the std above is widened" : "") << "\n";
+  if (e.look_alike_unverified) {
+    sum << "unverified: ";
+    if (e.look_alike_search_pending)
+      sum << "no look-alike search since the filter converged has finished; one is still running, "
+          << "spread over updates (--guard-nodes-per-update " << ms.guard.max_nodes_per_update
+          << "), so nothing rules out a look-alike place yet";
+    else
+      sum << "every look-alike search since the filter converged ran out of its node budget "
+          << "(--guard-max-search-nodes " << ms.guard.max_search_nodes
+          << ") with nothing found, so nothing rules out a look-alike place";
+    sum << (ms.guard.unverified_is_unsettled ? "; the std above is widened" : "") << "\n";
+  }
   // The totals over the updates; the convergence fields mean something only with a truth.
   const auto o = krp::evaluateTrial(records, krp::ConvergenceCriteria{});
   sum << "localization CPU: " << o.total_cpu_s << " s\n";

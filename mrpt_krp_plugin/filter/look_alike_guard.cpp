@@ -51,7 +51,8 @@ double LookAlikeGuard::score(const mrpt::obs::CObservation2DRangeScan& scan, con
 LookAlikeSearch LookAlikeGuard::search(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
                                        const std::vector<mrpt::math::TPoint2D>& also_excluded,
                                        const SeeThroughPenalty::Scan* see_through) const {
-  auto in_progress = startSearch(scan, pose, also_excluded, see_through);
+  // Run to its end before this returns, the search may use the caller's charge: no copy.
+  auto in_progress = beginSearch(scan, pose, also_excluded, see_through, /*own_charge=*/false);
   return resume(*in_progress, 0);
 }
 
@@ -60,6 +61,13 @@ long long LookAlikeSearchInProgress::nodesScored() const { return charged_ ? cha
 std::unique_ptr<LookAlikeSearchInProgress> LookAlikeGuard::startSearch(
     const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
     const std::vector<mrpt::math::TPoint2D>& also_excluded, const SeeThroughPenalty::Scan* see_through) const {
+  return beginSearch(scan, pose, also_excluded, see_through, /*own_charge=*/true);
+}
+
+std::unique_ptr<LookAlikeSearchInProgress> LookAlikeGuard::beginSearch(
+    const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose,
+    const std::vector<mrpt::math::TPoint2D>& also_excluded, const SeeThroughPenalty::Scan* see_through,
+    bool own_charge) const {
   std::unique_ptr<LookAlikeSearchInProgress> s(new LookAlikeSearchInProgress());
   s->tracked_score_ = score(scan, pose, see_through);
   MatchRequest request;
@@ -69,9 +77,12 @@ std::unique_ptr<LookAlikeSearchInProgress> LookAlikeGuard::startSearch(
   request.excluded.insert(request.excluded.end(), also_excluded.begin(), also_excluded.end());
   request.max_nodes_scored = params_.max_search_nodes;
   if (const auto* charged = searchCharge(see_through)) {
-    s->see_through_ = std::make_unique<SeeThroughPenalty::Scan>(*charged);
-    const SeeThroughPenalty::Scan* owned = s->see_through_.get();
-    request.leaf_penalty = [owned](const mrpt::math::TPose2D& p, double enough) { return owned->shareUpTo(p, enough); };
+    const SeeThroughPenalty::Scan* used = charged;
+    if (own_charge) {
+      s->see_through_ = std::make_unique<SeeThroughPenalty::Scan>(*charged);
+      used = s->see_through_.get();
+    }
+    request.leaf_penalty = [used](const mrpt::math::TPose2D& p, double enough) { return used->shareUpTo(p, enough); };
     s->charged_ = matcher_->startSearch(scan, request);
     return s;
   }

@@ -145,7 +145,8 @@ class LookAlikeSearchInProgress {
   friend class LookAlikeGuard;
   LookAlikeSearchInProgress() = default;
   double tracked_score_ = 0.0;  ///< the tracked pose's score on the search's scan
-  /// Owned, so the charge outlives the update whose scan it was read from.
+  /// Owned, so the charge outlives the update whose scan it was read from (a search run whole by
+  /// LookAlikeGuard::search uses its caller's instead).
   std::unique_ptr<SeeThroughPenalty::Scan> see_through_;
   std::unique_ptr<CorrelativeMatcher::Search> charged_;  ///< a search that can pause
   LookAlikeSearch uncharged_;                            ///< else the whole search's answer, found at once
@@ -203,6 +204,13 @@ class LookAlikeGuard {
   /// The score a place needs to be a look-alike of a pose scoring `tracked_score`: within
   /// ambiguity_margin of it, and never below what the matcher reports at all.
   double lookAlikeBar(double tracked_score) const;
+  /// startSearch(); with own_charge false the search points at `see_through` instead of a copy,
+  /// for a search that ends before its caller's charge goes (search()).
+  std::unique_ptr<LookAlikeSearchInProgress> beginSearch(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                         const mrpt::math::TPose2D& pose,
+                                                         const std::vector<mrpt::math::TPoint2D>& also_excluded,
+                                                         const SeeThroughPenalty::Scan* see_through,
+                                                         bool own_charge) const;
   /// `see_through` where the search charges it (search_charges_see_through), else null.
   const SeeThroughPenalty::Scan* searchCharge(const SeeThroughPenalty::Scan* see_through) const {
     return params_.search_charges_see_through ? see_through : nullptr;
