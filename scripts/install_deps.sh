@@ -25,7 +25,7 @@ APT_PACKAGES=(
   clang libclang-rt-14-dev
   # core libraries
   libmrpt-dev mrpt-apps mrpt-common libopencv-dev liboctomap-dev libeigen3-dev
-  libgtest-dev libgmock-dev libyaml-cpp-dev nlohmann-json3-dev zlib1g-dev
+  libgtest-dev libgmock-dev libyaml-cpp-dev nlohmann-json3-dev zlib1g-dev libssl-dev
   # ROS 1 as packaged by Debian (catkin must be named: see shared/notes/dependencies.md)
   catkin libroscpp-dev libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev
   libstd-srvs-dev libtf2-ros-dev librosbag-dev libvisualization-msgs-dev ros-core

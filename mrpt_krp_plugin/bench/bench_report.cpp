@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "mrpt_krp_plugin/bench/kidnap_report.h"
@@ -172,6 +173,22 @@ std::string summaryTable(const std::vector<MethodSummary>& summaries, const std:
   return o.str();
 }
 
+namespace {
+
+/// Which models the seeded methods ran, per world and lidar: a report made before its models were
+/// replaced says so. Empty when no method used models.
+std::string modelsSection(const std::vector<TrialRecord>& records) {
+  std::set<std::string> lines;
+  for (const auto& r : records)
+    if (!r.models.empty()) lines.insert("- " + r.world + ", " + r.lidar + ": `" + r.models + "`\n");
+  if (lines.empty()) return "";
+  std::string md = "Models of the seeded methods:\n\n";
+  for (const auto& l : lines) md += l;
+  return md + "\n";
+}
+
+}  // namespace
+
 void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig& cfg, const std::string& command_line,
                       const std::string& out_dir) {
   namespace fs = std::filesystem;
@@ -299,7 +316,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
         "Confident-wrong: confident, yet the mean is outside tolerance; confident-right: confident and within it "
         "(the share of trials where the method both is right and says so). Medians of updates, distance, CPU and particle-updates are over "
         "converged trials. Ratios are against uniform-mcl in this same run.\n\n"
-     << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m)
+     << modelsSection(records) << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m)
      // krp-bench sets both relocalizers' rankings alike; the learned one's stands for both.
      << reliabilitySections(records, cfg.criteria.max_error_xy_m, cfg.method_settings.relocalizer.verifier.ranking)
      << kidnapSection(summarizeKidnaps(records), cfg.kidnap_at_step)

@@ -50,6 +50,14 @@ std::vector<mrpt::math::TPoint2D> trialStartRegion(const World& world) {
                    "trial_start_zone '" + world.trial_start_zone + "' is not a zone of " + world.zones_path);
 }
 
+/// The folder and the first digits of its two models' sha256, which the relocalizer has checked
+/// against the files: enough to tell two trainings apart in a report.
+std::string modelsIdentity(const std::string& folder, const ModelManifest& manifest) {
+  constexpr size_t kDigits = 12;
+  return folder + " (classifier sha256 " + manifest.classifier.sha256.substr(0, kDigits) + ", keypoints sha256 " +
+         manifest.keypoints.sha256.substr(0, kDigits) + ")";
+}
+
 }  // namespace
 
 std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
@@ -71,6 +79,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     MethodResources resources;
     std::vector<mrpt::math::TPoint2D> start_region;  ///< where trials start (empty: anywhere)
     std::shared_ptr<const PathAmbiguityCheck> path_check;  ///< when BenchConfig::path_ambiguity
+    std::string models;  ///< TrialRecord::models of the seeded methods
   };
   for (const int t : cfg.only_trials)
     if (t < 0 || t >= cfg.trials)
@@ -105,6 +114,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     }
     for (size_t li = 0; li < lidars.size(); ++li) {
       MethodResources res;
+      std::string models_identity;
       res.matcher = matcher;
       res.guard = guard;
       if (!seeded_methods.empty()) {
@@ -116,10 +126,11 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
                                                         : std::make_shared<Relocalizer>(models, *map, rp);
         }
         const auto& r = *res.relocalizers.begin()->second;
-        log << "krp-bench: " << w.name << " / " << lidars[li] << ": models " << models << " (lidar "
+        models_identity = modelsIdentity(models, r.manifest());
+        log << "krp-bench: " << w.name << " / " << lidars[li] << ": models " << models_identity << " (lidar "
             << r.manifest().lidar_name << ")\n";
       }
-      jobs.push_back({w, map, filter_map, w.lidar(lidars[li]), wi, li, res, start_region, path_check});
+      jobs.push_back({w, map, filter_map, w.lidar(lidars[li]), wi, li, res, start_region, path_check, models_identity});
     }
   }
   log << "krp-bench: base seed " << cfg.seed << "; " << jobs.size() << " world/lidar pair(s) x " << cfg.methods.size()
@@ -165,6 +176,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         rec.trial_seed = trial_seed;
         rec.filter_seed = filter_seed;
         rec.free_area_m2 = free_m2;
+        if (methodNeedsModels(method)) rec.models = job.models;
         size_t last_initialization = 0;  // the seeding to check is the last one (after a kidnap, the re-seeding)
         for (size_t i = 0; i < steps.size(); ++i) {
           const auto estimate = loc.update(steps[i]);

@@ -46,6 +46,9 @@ struct TrialRecord {
   int trial = 0;
   uint64_t trial_seed = 0, filter_seed = 0;
   double free_area_m2 = 0.0;
+  /// Seeded methods: the model folder and its two models' sha256 (checked against the files on
+  /// load), so a report names the models it measured; empty for the others.
+  std::string models;
   TrialOutcome outcome;
   std::vector<UpdateRecord> updates;
   /// Methods that relocalize from the first scan (seeded, global-matcher): what the relocalizer answered.

@@ -3,11 +3,12 @@
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/inference/image_tensor.h"
+#include "mrpt_krp_plugin/inference/model_file_check.h"
 
 namespace krp {
 
 KeypointDetector::KeypointDetector(const ModelManifest& manifest, const OnnxRuntimeParams& params)
-    : manifest_(manifest), model_(manifest.keypointsPath(), params) {}
+    : manifest_(manifest), model_(requireManifestModelFile(manifest.keypoints, manifest.keypointsPath()), params) {}
 
 Tensor KeypointDetector::raw(const cv::Mat& sdt_bgr) const {
   const int size = manifest_.submap_size_px;

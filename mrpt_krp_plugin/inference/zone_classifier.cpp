@@ -3,11 +3,12 @@
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/inference/image_tensor.h"
+#include "mrpt_krp_plugin/inference/model_file_check.h"
 
 namespace krp {
 
 ZoneClassifier::ZoneClassifier(const ModelManifest& manifest, const OnnxRuntimeParams& params)
-    : manifest_(manifest), model_(manifest.classifierPath(), params) {}
+    : manifest_(manifest), model_(requireManifestModelFile(manifest.classifier, manifest.classifierPath()), params) {}
 
 std::vector<float> ZoneClassifier::probabilities(const cv::Mat& occupancy) const {
   const int size = manifest_.submap_size_px;

@@ -8,6 +8,7 @@
 
 #include "mrpt_krp_plugin/bench/method_registry.h"
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/inference/model_manifest.h"
 
 namespace krp {
 namespace {
@@ -74,6 +75,31 @@ TEST(BenchRunner, OnlyTheGuardedMethodsChargeBeamsSeenThroughTheMap) {
   for (size_t i = 0; i < charged[0].updates.size(); ++i)
     differ |= charged[0].updates[i].error_xy_m != field_only[0].updates[i].error_xy_m;
   EXPECT_TRUE(differ) << "the penalty changed the particles' weights";
+}
+
+// A report names the models its seeded methods ran (folder and sha256), so one made before the
+// models were replaced says so; the methods without models name none.
+TEST(BenchRunner, RecordsNameTheModelsTheSeededMethodsRan) {
+  auto cfg = smallOfficeRun();
+  cfg.methods = {"amcl-kld", "seeded-keypoints-only"};
+  cfg.trials = 1;
+  cfg.trial.steps = 1;
+  cfg.method_settings.models_root = std::string(KRP_SOURCE_DIR) + "/models";
+  std::ostringstream log;
+  const auto records = runBench(cfg, log);
+  ASSERT_EQ(records.size(), 2u);
+  const auto manifest = readModelManifest(cfg.method_settings.models_root + "/office_two_zone");
+  for (const auto& r : records) {
+    if (r.method == "amcl-kld") {
+      EXPECT_EQ(r.models, "");
+      continue;
+    }
+    EXPECT_NE(r.models.find("office_two_zone (classifier sha256 " + manifest.classifier.sha256.substr(0, 12)),
+              std::string::npos)
+        << r.models;
+    EXPECT_NE(r.models.find("keypoints sha256 " + manifest.keypoints.sha256.substr(0, 12)), std::string::npos)
+        << r.models;
+  }
 }
 
 }  // namespace

@@ -65,6 +65,22 @@ TEST(Relocalizer, RefusesAMapOfAnotherCellSize) {
   EXPECT_NE(message.find("trained on a map of 0.05"), std::string::npos) << message;
 }
 
+// A model file that is not the one the manifest describes (another training's copied over it) is
+// refused before it runs with this manifest's zones and landmarks; the shipped files pass.
+TEST(Relocalizer, RefusesAModelFileTheManifestDoesNotDescribe) {
+  namespace fs = std::filesystem;
+  const auto map = loadOccupancyMap(readWorld(kWorld).map_path);
+  for (const char* file : {"zone_classifier.onnx", "keypoints.onnx"}) {
+    const fs::path dir = test::tempDir(std::string("replaced_") + file);
+    fs::copy(kModels, dir, fs::copy_options::recursive);
+    EXPECT_EQ(inputErrorMessage([&] { Relocalizer(dir.string(), *map.grid); }), "") << file;
+    std::ofstream(dir / file, std::ios::binary | std::ios::app) << '\0';  // one byte more
+    const auto message = inputErrorMessage([&] { Relocalizer(dir.string(), *map.grid); });
+    EXPECT_NE(message.find(file), std::string::npos) << message;
+    EXPECT_NE(message.find("is not the model manifest.json describes"), std::string::npos) << message;
+  }
+}
+
 // Same cell size, another building: the models' landmarks are not on its walls.
 TEST(Relocalizer, RefusesAnotherWorldsMap) {
   const auto warehouse = loadOccupancyMap(
