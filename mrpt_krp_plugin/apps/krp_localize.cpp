@@ -330,7 +330,7 @@ static int run(int argc, char** argv) {
     const SingleScanBackend backend{use_matcher ? nullptr : relocalizer, resources.matcher};
     if (!every_scan) return relocalizeOneScan(backend, *map.grid, steps, truth, single_scan, s["out_dir"]);
     const std::string header = "krp-localize summary\ncommand: " + args.commandLine() + "\nmap: " + s["map"] + "\ninput: " +
-                               input + "\nrelocalizer: " + (use_matcher ? "global-matcher" : "learned, " + s["models"]) + "\n";
+                               input + "\nrelocalizer: " + (use_matcher ? "global-matcher" : "learned, " + krp::modelsIdentity(relocalizer->manifest())) + "\n";
     return relocalizeEveryScan(backend, *map.grid, steps, truth, static_cast<std::size_t>(stride), header, s["out_dir"]);
   }
   auto init = krp::makeInitializer(s["method"], ms, resources);
@@ -362,7 +362,9 @@ static int run(int argc, char** argv) {
   std::ostringstream sum;
   const auto& last = records.back();
   sum << "krp-localize summary\ncommand: " << args.commandLine() << "\nmap: " << s["map"] << "\ninput: " << input
-      << "\nmethod: " << init->name() << "\nsteps: " << steps.size() << "\ninitial particles: " << records.front().particles
+      << "\nmethod: " << init->name()
+      << (relocalizer && krp::methodNeedsModels(s["method"]) ? "\nmodels: " + krp::modelsIdentity(relocalizer->manifest()) : "")
+      << "\nsteps: " << steps.size() << "\ninitial particles: " << records.front().particles
       << "\nfinal particles: " << last.particles << "\nfinal pose (grid frame): " << loc.particles().getMeanVal().asString()
       << "\nfinal std: " << last.spread.xy_std_m << " m, " << last.spread.phi_std_deg << " deg\n";
   if (e.ambiguous_with)

@@ -50,14 +50,6 @@ std::vector<mrpt::math::TPoint2D> trialStartRegion(const World& world) {
                    "trial_start_zone '" + world.trial_start_zone + "' is not a zone of " + world.zones_path);
 }
 
-/// The folder and the first digits of its two models' sha256, which the relocalizer has checked
-/// against the files: enough to tell two trainings apart in a report.
-std::string modelsIdentity(const std::string& folder, const ModelManifest& manifest) {
-  constexpr size_t kDigits = 12;
-  return folder + " (classifier sha256 " + manifest.classifier.sha256.substr(0, kDigits) + ", keypoints sha256 " +
-         manifest.keypoints.sha256.substr(0, kDigits) + ")";
-}
-
 }  // namespace
 
 std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
@@ -126,7 +118,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
                                                         : std::make_shared<Relocalizer>(models, *map, rp);
         }
         const auto& r = *res.relocalizers.begin()->second;
-        models_identity = modelsIdentity(models, r.manifest());
+        models_identity = modelsIdentity(r.manifest());
         log << "krp-bench: " << w.name << " / " << lidars[li] << ": models " << models_identity << " (lidar "
             << r.manifest().lidar_name << ")\n";
       }

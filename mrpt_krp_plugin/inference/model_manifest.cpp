@@ -138,4 +138,10 @@ ModelManifest readModelManifest(const std::string& folder) {
   return m;
 }
 
+std::string modelsIdentity(const ModelManifest& manifest) {
+  constexpr size_t kDigits = 12;
+  return manifest.folder + " (classifier sha256 " + manifest.classifier.sha256.substr(0, kDigits) +
+         ", keypoints sha256 " + manifest.keypoints.sha256.substr(0, kDigits) + ")";
+}
+
 }  // namespace krp

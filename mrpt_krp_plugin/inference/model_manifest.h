@@ -60,4 +60,8 @@ struct ModelManifest {
 /// not the zone list, input shapes that are not the submap size).
 ModelManifest readModelManifest(const std::string& folder);
 
+/// The folder and the first digits of its two models' sha256 (checked against the files when the
+/// models load): enough to tell two trainings apart in a report or a log.
+std::string modelsIdentity(const ModelManifest& manifest);
+
 }  // namespace krp
