@@ -20,7 +20,7 @@ void useMinLocalizedFitFraction(double fraction, RelocalizerParams& learned, Mat
 std::vector<std::string> hypothesisSourceBackends() { return {"learned", "global-matcher"}; }
 
 HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
-                                      const HypothesisSourceParams& params) {
+                                      const HypothesisSourceParams& params, std::string* description) {
   if (!map) throw InputError("hypothesis source", "no map");
   if (params.backend == "learned") {
     if (params.models_dir.empty())
@@ -29,6 +29,7 @@ HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupan
                            ? std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned)
                            : std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned,
                                                                  readZonesYaml(params.zones_file));
+    if (description) *description = "learned, " + modelsIdentity(relocalizer->manifest());
     // The map is captured too: the relocalizer's verifier was built from it.
     return [relocalizer, map](const mrpt::obs::CObservation2DRangeScan& scan) {
       return relocalizer->relocalize(scan).ranking;
@@ -36,6 +37,7 @@ HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupan
   }
   if (params.backend == "global-matcher") {
     auto matcher = std::make_shared<const MatcherRelocalizer>(*map, params.matcher);
+    if (description) *description = "global-matcher";
     return [matcher, map](const mrpt::obs::CObservation2DRangeScan& scan) { return matcher->relocalize(scan); };
   }
   std::string known;

@@ -95,7 +95,8 @@ void RelocalizerNode::useMap(OccupancyMap map) {
   auto state = std::make_shared<MapState>();
   state->map = std::make_shared<const OccupancyMap>(std::move(map));
   const std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> grid = state->map->grid;
-  const HypothesisSource raw = makeHypothesisSource(grid, params_.hypothesisSource());
+  std::string backend;
+  const HypothesisSource raw = makeHypothesisSource(grid, params_.hypothesisSource(), &backend);
   // The relocalizer and the tracker's initializer share one source: one call at a time.
   auto source_mutex = std::make_shared<std::mutex>();
   const HypothesisSource serialized = [raw, source_mutex](const mrpt::obs::CObservation2DRangeScan& scan) {
@@ -131,7 +132,8 @@ void RelocalizerNode::useMap(OccupancyMap map) {
                                                                                 params_.lookAlikeGuard()));
   }
   std::ostringstream s;
-  s << "map in use: " << state->map->source << " (" << grid->getSizeX() << " x " << grid->getSizeY() << " cells)";
+  s << "map in use: " << state->map->source << " (" << grid->getSizeX() << " x " << grid->getSizeY()
+    << " cells); backend " << backend;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     map_state_ = state;

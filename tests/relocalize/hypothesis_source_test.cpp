@@ -3,6 +3,8 @@
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/inference/model_manifest.h"
+#include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
@@ -27,6 +29,21 @@ TEST(HypothesisSource, GlobalMatcherNeedsNoModelsAndFindsThePose) {
   ASSERT_FALSE(r.hypotheses.empty());
   EXPECT_NEAR(r.hypotheses[0].pose.x, truth.x(), 0.15);
   EXPECT_NEAR(r.hypotheses[0].pose.y, truth.y(), 0.15);
+}
+
+// A status line says what runs: the matcher, or the models by folder and sha256.
+TEST(HypothesisSource, DescribesWhatRuns) {
+  HypothesisSourceParams p;
+  p.backend = "global-matcher";
+  std::string description;
+  makeHypothesisSource(room(), p, &description);
+  EXPECT_EQ(description, "global-matcher");
+  p.backend = "learned";
+  p.models_dir = std::string(KRP_SOURCE_DIR) + "/models/office_two_zone";
+  const auto office = loadOccupancyMap(std::string(KRP_SOURCE_DIR) + "/sim_worlds/office_two_zone/office_two_zone.yaml");
+  makeHypothesisSource(office.grid, p, &description);
+  EXPECT_EQ(description, "learned, " + modelsIdentity(readModelManifest(p.models_dir)));
+  EXPECT_NE(description.find("classifier sha256 "), std::string::npos) << description;
 }
 
 TEST(HypothesisSource, LearnedWithoutModelsSaysWhatIsMissing) {
