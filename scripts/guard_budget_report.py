@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Writes reports/guard_budget/REPORT.md from the krp-bench runs of scripts/bench_guard_budget.sh.
 
-Usage: guard_budget_report.py RUNS_DIR REPORT.md COMMAND_LINE...
+Usage: guard_budget_report.py [--made-by SCRIPT] RUNS_DIR REPORT.md COMMAND_LINE...
 RUNS_DIR holds <world>/<setting>/{trials,updates}.csv; each world's 4M_default run is the one
-the others are compared with.
+the others are compared with. --made-by names the script that ran them (default: this report's).
 """
 import csv
 import statistics
@@ -58,13 +58,16 @@ def rows_for(world_dir, setting, base):
 
 
 def main(argv):
+    made_by = "scripts/bench_guard_budget.sh"
+    if len(argv) > 2 and argv[1] == "--made-by":
+        made_by, argv = argv[2], argv[:1] + argv[3:]
     if len(argv) < 3:
         sys.exit(__doc__)
     runs, report, commands = Path(argv[1]), Path(argv[2]), argv[3:]
     lines = [
         "# The look-alike guard out of budget",
         "",
-        "Made by `scripts/bench_guard_budget.sh`. The guard's whole-map search for a look-alike place "
+        f"Made by `{made_by}`. The guard's whole-map search for a look-alike place "
         "scores at most `--guard-max-search-nodes` nodes. A search that runs out with nothing found has "
         "not ruled out a look-alike: the filter now reports itself *unverified* (covariance widened like "
         "an unsettled pose's, so not confident) until a search since it converged finishes. *1M, "
@@ -90,7 +93,9 @@ def main(argv):
         for setting in SETTING_ORDER:
             if (world_dir / setting / "trials.csv").exists():
                 lines.extend(rows_for(world_dir, setting, base))
-    lines += ["", "Commands (OUT: a temporary folder):", ""] + [f"- {c}" for c in commands] + [""]
+    temporary = any("OUT/" in c for c in commands)
+    lines += ["", "Commands (OUT: a temporary folder):" if temporary else "Commands:", ""]
+    lines += [f"- {c}" for c in commands] + [""]
     report.write_text("\n".join(lines))
 
 
