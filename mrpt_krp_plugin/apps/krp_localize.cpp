@@ -361,9 +361,10 @@ static int run(int argc, char** argv) {
   krp::writeFileAtomically((out / "poses.csv").string(), csv.str());
   std::ostringstream sum;
   const auto& last = records.back();
+  // Outside single-scan mode a relocalizer exists exactly for the methods that need models.
   sum << "krp-localize summary\ncommand: " << args.commandLine() << "\nmap: " << s["map"] << "\ninput: " << input
       << "\nmethod: " << init->name()
-      << (relocalizer && krp::methodNeedsModels(s["method"]) ? "\nmodels: " + krp::modelsIdentity(relocalizer->manifest()) : "")
+      << (relocalizer ? "\nmodels: " + krp::modelsIdentity(relocalizer->manifest()) : "")
       << "\nsteps: " << steps.size() << "\ninitial particles: " << records.front().particles
       << "\nfinal particles: " << last.particles << "\nfinal pose (grid frame): " << loc.particles().getMeanVal().asString()
       << "\nfinal std: " << last.spread.xy_std_m << " m, " << last.spread.phi_std_deg << " deg\n";

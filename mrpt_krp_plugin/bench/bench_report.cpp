@@ -54,6 +54,18 @@ std::string reliabilitySections(const std::vector<TrialRecord>& records, double 
   return o.str();
 }
 
+/// Which models the seeded methods ran, per world and lidar: a report made before its models were
+/// replaced says so. Empty when no method used models.
+std::string modelsSection(const std::vector<TrialRecord>& records) {
+  std::set<std::string> lines;
+  for (const auto& r : records)
+    if (!r.models.empty()) lines.insert("- " + r.world + ", " + r.lidar + ": `" + r.models + "`\n");
+  if (lines.empty()) return "";
+  std::string md = "Models of the seeded methods:\n\n";
+  for (const auto& l : lines) md += l;
+  return md + "\n";
+}
+
 }  // namespace
 
 bool seedBestRight(const TrialRecord& r, double right_within_m) {
@@ -172,22 +184,6 @@ std::string summaryTable(const std::vector<MethodSummary>& summaries, const std:
   }
   return o.str();
 }
-
-namespace {
-
-/// Which models the seeded methods ran, per world and lidar: a report made before its models were
-/// replaced says so. Empty when no method used models.
-std::string modelsSection(const std::vector<TrialRecord>& records) {
-  std::set<std::string> lines;
-  for (const auto& r : records)
-    if (!r.models.empty()) lines.insert("- " + r.world + ", " + r.lidar + ": `" + r.models + "`\n");
-  if (lines.empty()) return "";
-  std::string md = "Models of the seeded methods:\n\n";
-  for (const auto& l : lines) md += l;
-  return md + "\n";
-}
-
-}  // namespace
 
 void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig& cfg, const std::string& command_line,
                       const std::string& out_dir) {

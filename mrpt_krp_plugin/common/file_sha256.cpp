@@ -6,6 +6,7 @@
 #include <array>
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 
 #include "mrpt_krp_plugin/common/input_error.h"
 
