@@ -4,18 +4,29 @@
 # again, or says which models it used. The list is kept here, beside the reports' own scripts,
 # so that it is one place to grow when a report starts using the models.
 #   scripts/rerun_model_reports.sh office_two_zone      (or warehouse, or all)
-#   scripts/rerun_model_reports.sh --list warehouse     (print the commands, run nothing)
+#   scripts/rerun_model_reports.sh --list warehouse     (print the commands, run nothing; --list
+#                                                        may come after the world too)
 # Several scripts cover both worlds in one run (their trial seeds depend on a world's place in the
 # run); they run once. Hours on 2 cores: the scripts' headers give each one's time.
 # (build first with scripts/build.sh; KRP_SKIP_SETUP=1 is passed to the recheck)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
+usage="usage: $0 [--list] office_two_zone|warehouse|all"
+# Hours of reruns that overwrite committed reports: anything but exactly one world and an
+# optional --list (in either place) is refused before one of them starts.
 list_only=0
-if [[ "${1:-}" == --list ]]; then list_only=1; shift; fi
-which="${1:-}"
-case "$which" in office_two_zone|warehouse|all) ;; *)
-  echo "usage: $0 [--list] office_two_zone|warehouse|all" >&2; exit 2;; esac
+which=""
+for arg in "$@"; do
+  case "$arg" in
+    --list) list_only=1 ;;
+    office_two_zone|warehouse|all)
+      [[ -z "$which" ]] || { echo "$0: one world only, got '$which' and '$arg'" >&2; echo "$usage" >&2; exit 2; }
+      which="$arg" ;;
+    *) echo "$0: unknown argument '$arg'" >&2; echo "$usage" >&2; exit 2 ;;
+  esac
+done
+[[ -n "$which" ]] || { echo "$usage" >&2; exit 2; }
 
 commands=()
 add() { commands+=("$*"); }

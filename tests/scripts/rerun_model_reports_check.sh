@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Pins scripts/rerun_model_reports.sh to the reports it must rerun: every command it lists is a
 # script that exists, every bench script that reads the shipped models (models/office_two_zone,
-# models/warehouse, or --models-root models) is listed, and an unknown world is refused.
+# models/warehouse, or --models-root models) is listed, and an unknown world or argument is
+# refused.
 # bench_other_lidars.sh reads models/office_two_zone_lds01, a folder of its own.
 set -euo pipefail
 root="${1:?usage: $0 REPO_ROOT}"
@@ -21,4 +22,11 @@ for f in "$root"/scripts/bench_*.sh; do
   fi
 done
 if "$script" --list nowhere >/dev/null 2>&1; then echo "an unknown world was accepted"; exit 1; fi
+# A misplaced or misspelt flag must not start hours of reruns: each of these either lists or
+# is refused, and none reaches a bench script (the listing stands in for one here).
+[[ "$("$script" warehouse --list)" == "$("$script" --list warehouse)" ]] || { echo "a trailing --list did not list"; exit 1; }
+for bad in "warehouse --lsit" "--list warehouse office_two_zone" "--list" "--dry-run all"; do
+  # shellcheck disable=SC2086  # word splitting is the point: each is an argument list
+  if "$script" $bad >/dev/null 2>&1; then echo "accepted: $bad"; exit 1; fi
+done
 echo "rerun_model_reports: $(wc -l <<< "$listed") commands, all present"
