@@ -58,8 +58,11 @@ static int run(int argc, char** argv) {
                 {"seeded-max-particles", "N", "seeded: particle cap", "5000"},
                 {"seeded-particles-per-hypothesis", "N", "seeded: particles around each hypothesis, before the "
                  "confidence split", std::to_string(krp::SeededInitParams{}.particles_per_hypothesis)},
-                {"seeded-min-particles", "N", "seeded: fewest particles in all, uniform share included",
-                 std::to_string(krp::SeededInitParams{}.min_particles)},
+                {"seeded-min-particles", "N", "seeded: fewest particles in all, uniform share included (and the "
+                 "floor of a uniform start that shrinks)", std::to_string(krp::SeededInitParams{}.min_particles)},
+                {"seeded-uniform-start-fixed", "", "seeded methods: a filter that started uniform (no hypothesis) "
+                 "keeps its count to the end instead of shrinking by KLD sampling once converged "
+                 "(SeededInitParams::fallback_shrinks off; the seeded filter before it)", ""},
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"top-turns", "N", "seeded, wall-aligned models: submap turns the keypoint model runs on (the "
                  "classifier's surest)", std::to_string(krp::RelocalizerParams{}.top_turns)},
@@ -161,6 +164,8 @@ static int run(int argc, char** argv) {
     if (args.integer(flag) < 1) throw krp::InputError(std::string("--") + flag, "must be 1 or more");
   cfg.method_settings.seeded.particles_per_hypothesis = static_cast<size_t>(args.integer("seeded-particles-per-hypothesis"));
   cfg.method_settings.seeded.min_particles = static_cast<size_t>(args.integer("seeded-min-particles"));
+  cfg.method_settings.seeded.fallback_shrinks.min_particles = cfg.method_settings.seeded.min_particles;
+  cfg.method_settings.seeded.fallback_shrinks.enabled = !args.flag("seeded-uniform-start-fixed");
   cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integerInRange("top-zones", 0, kMaxZones));
   const auto top_turns = args.integer("top-turns");
   if (top_turns < 1 || top_turns > 4) throw krp::InputError("--top-turns", "must be 1 to 4");

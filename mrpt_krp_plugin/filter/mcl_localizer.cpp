@@ -77,13 +77,30 @@ void MclLocalizer::resampleSystematicIfNeeded() {
   double total = 0.0;
   for (size_t i = 0; i < n; ++i) cumulative[i] = (total += std::exp(pf_.m_particles[i].log_w - max_lw));
   Rng rng(deriveSeed(params_.seed, ++resample_draws_));
-  const double step = total / static_cast<double>(n);
+  // KLD sizing draws up to the start's count and keeps the prefix it needs; a set that has
+  // spread out again regains the start's count.
+  const size_t draws = kld_resampling_ ? start_particles_ : n;
+  const bool size_by_kld =
+      kld_resampling_ &&
+      isConcentrated(filterSpread(std::get<0>(pf_.getCovarianceAndMean())), kld_resampling_->only_once_concentrated);
+  const double step = total / static_cast<double>(draws);
   double u = rng.uniform(0.0, step);
-  auto old = pf_.m_particles;
+  std::vector<mrpt::math::TPose2D> picked(draws);
   size_t j = 0;
-  for (size_t i = 0; i < n; ++i, u += step) {
+  for (size_t i = 0; i < draws; ++i, u += step) {
     while (j + 1 < n && cumulative[j] < u) ++j;
-    pf_.m_particles[i].d = old[j].d;
+    picked[i] = pf_.m_particles[j].d;
+  }
+  size_t kept = draws;
+  if (size_by_kld) {
+    // Systematic draws come in the order of the old set: shuffled, any prefix is a fair sample.
+    for (size_t i = draws; i > 1; --i)
+      std::swap(picked[i - 1], picked[static_cast<size_t>(rng.uniformInt(0, static_cast<int>(i) - 1))]);
+    kept = kldSampleCount(picked, *kld_resampling_);
+  }
+  pf_.m_particles.resize(kept);
+  for (size_t i = 0; i < kept; ++i) {
+    pf_.m_particles[i].d = picked[i];
     pf_.m_particles[i].log_w = 0.0;
   }
 }
@@ -285,6 +302,8 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   if (!initialized_) {
     reseedMrptGlobalRandom(params_.seed + static_cast<uint32_t>(initializations_));
     init_->initialize(pf_, filter_.m_options, *map_, *step.observations);
+    kld_resampling_ = init_->kldResampling();
+    start_particles_ = pf_.size();
     initialized_ = true;
     ++initializations_;
     e.initialized = true;
@@ -313,6 +332,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     see_through = see_through_->forScan(*scan);
     weighSeeThrough(*see_through);
   }
+  const size_t weighed = pf_.size();
   if (!filter_.m_options.adaptiveSampleSize) resampleSystematicIfNeeded();
 
   auto [cov, mean] = pf_.getCovarianceAndMean();
@@ -346,7 +366,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     e.kidnap_detected = kidnap_.update(e.fit_fraction);
     if (e.kidnap_detected) initialized_ = false;
   }
-  e.particles = pf_.size();
+  e.particles = weighed;
   e.look_alike_searches = searches_this_update_;
   e.look_alike_search_cpu_s = search_cpu_this_update_;
   e.look_alike_searches_unfinished = unfinished_this_update_;

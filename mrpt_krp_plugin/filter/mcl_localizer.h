@@ -36,6 +36,8 @@ struct MclEstimate {
   /// The particles' covariance; widened to cover `ambiguous_with` when the guard found one, so
   /// that whoever reads only the covariance sees an unsettled pose.
   mrpt::math::CMatrixDouble33 cov;
+  /// Particles this update weighed on its scan: a resampling that ends the update may leave
+  /// fewer for the next one (KLD sizing), never more than the start's.
   std::size_t particles = 0;
   double cpu_s = 0.0;  ///< thread CPU time of this update (localization code only) [s]
   /// Scan returns explained at the mean (ScanFit); -1 when neither kidnap detection nor the
@@ -73,8 +75,9 @@ struct MclEstimate {
 ///
 /// MRPT 2.5.8's fixed-size resampling inside CParticleFilter::executeOn does not reset the
 /// weights afterwards, so they compound over resamplings; this class disables that path
-/// (BETA = 0) and resamples itself (systematic, weights reset) when ESS/N < threshold. The
-/// KLD path resamples inside MRPT's adaptive proposal and is left as it is.
+/// (BETA = 0) and resamples itself (systematic, weights reset) when ESS/N < threshold, keeping
+/// the count, or choosing it by KLD sampling when the initializer asks (kldResampling). MRPT's
+/// KLD path resamples inside its adaptive proposal and is left as it is.
 class MclLocalizer {
  public:
   /// Prepares its own copy of `map` for `params.sensor` (prepareSensorModelMap: the likelihood
@@ -144,6 +147,10 @@ class MclLocalizer {
   bool initialized_ = false;
   int initializations_ = 0;
   uint64_t resample_draws_ = 0;
+  /// The initializer's KLD sizing for this start (none: fixed count), and the start's count,
+  /// which caps it.
+  std::optional<KldSampleSizeParams> kld_resampling_;
+  std::size_t start_particles_ = 0;
   /// Made with the filter when kidnap detection is on, or with a guard that has a fit floor: its
   /// distance field is map preparation, not charged to an update.
   std::unique_ptr<ScanFitScorer> fit_scorer_;

@@ -6,7 +6,10 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 
+#include <optional>
 #include <string>
+
+#include "mrpt_krp_plugin/filter/kld_sample_size.h"
 
 namespace krp {
 
@@ -24,6 +27,12 @@ class ParticleInitializer {
   /// initializer uses; uniform ones ignore it.
   virtual void initialize(mrpt::slam::CMonteCarloLocalization2D& pf, mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf_options,
                           const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) = 0;
+
+  /// After initialize(): how the filter sizes its set at each of its own resamplings. Empty
+  /// (the default): the start's count stays to the end, as in MRPT's fixed-size MCL; with
+  /// params, KLD sampling picks the count, never above the start's. MRPT's own KLD path
+  /// (`pf_options.adaptiveSampleSize`) does not ask.
+  virtual std::optional<KldSampleSizeParams> kldResampling() const { return std::nullopt; }
 };
 
 }  // namespace krp

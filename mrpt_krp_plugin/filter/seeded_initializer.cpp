@@ -33,6 +33,11 @@ SeededInitializer::SeededInitializer(HypothesisSource source, SeededInitParams p
     throw InputError("seeded min_particles", "exceeds max_particles");
 }
 
+std::optional<KldSampleSizeParams> SeededInitializer::kldResampling() const {
+  if (last_ && last_->fell_back_to_uniform && params_.fallback_shrinks.enabled) return params_.fallback_shrinks;
+  return std::nullopt;
+}
+
 void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
                                    mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf_options,
                                    const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) {

@@ -32,6 +32,11 @@ struct SeededInitParams {
   double min_std_yaw_deg = 3.0, max_std_yaw_deg = 20.0;
   /// With no hypothesis at all, the filter starts as uniform MCL with these settings.
   UniformInitParams fallback;
+  /// ...and then sizes its set by KLD sampling at each resampling, so that once it converges it
+  /// tracks with a seeded start's few hundred particles instead of the tens of thousands that
+  /// cover the map (disabled: the uniform count stays to the end). A seeded start is already
+  /// concentrated and capped at max_particles; its count stays fixed.
+  KldSampleSizeParams fallback_shrinks;
   double free_cell_min_freeness = 0.7;  ///< a map cell with p(free) above this is free [0..1]
   uint64_t seed = 1;
 };
@@ -58,6 +63,8 @@ class SeededInitializer : public ParticleInitializer {
   std::string name() const override { return name_; }
   void initialize(mrpt::slam::CMonteCarloLocalization2D& pf, mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf_options,
                   const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) override;
+
+  std::optional<KldSampleSizeParams> kldResampling() const override;
 
   const std::optional<SeedingRecord>& lastSeeding() const { return last_; }
 

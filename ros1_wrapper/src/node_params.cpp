@@ -101,6 +101,7 @@ const std::map<std::string, Reader>& readers() {
       {"update_min_a", number(&NodeParams::update_min_a, 0.0, 2 * M_PI)},
       {"max_particles", integer(&NodeParams::max_particles, 100, 1000000)},
       {"uniform_fraction", number(&NodeParams::uniform_fraction, 0.0, 0.99)},
+      {"shrink_uniform_start", boolean(&NodeParams::shrink_uniform_start)},
       {"look_alike_guard", boolean(&NodeParams::look_alike_guard)},
       {"look_alike_ambiguity_margin", number(&NodeParams::look_alike_ambiguity_margin, 0.0, 1.0)},
       {"look_alike_min_fit_fraction", number(&NodeParams::look_alike_min_fit_fraction, 0.0, 1.0)},
@@ -172,6 +173,8 @@ SeededInitParams NodeParams::seeded() const {
   s.max_particles = static_cast<std::size_t>(max_particles);
   s.min_particles = std::min(s.min_particles, s.max_particles);
   s.uniform_fraction = uniform_fraction;
+  s.fallback_shrinks.enabled = shrink_uniform_start;
+  s.fallback_shrinks.min_particles = s.min_particles;
   return s;
 }
 

@@ -37,6 +37,7 @@ TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
   EXPECT_DOUBLE_EQ(doc["update_min_d"].as<double>(), d.update_min_d);
   EXPECT_DOUBLE_EQ(doc["update_min_a"].as<double>(), d.update_min_a);
   EXPECT_DOUBLE_EQ(doc["uniform_fraction"].as<double>(), d.uniform_fraction);
+  EXPECT_EQ(doc["shrink_uniform_start"].as<bool>(), d.shrink_uniform_start);
   EXPECT_DOUBLE_EQ(doc["look_alike_ambiguity_margin"].as<double>(), d.look_alike_ambiguity_margin);
   EXPECT_DOUBLE_EQ(doc["look_alike_min_fit_fraction"].as<double>(), d.look_alike_min_fit_fraction);
   EXPECT_EQ(doc["look_alike_watch_rejected"].as<bool>(), d.look_alike_watch_rejected);

@@ -83,6 +83,36 @@ TEST(SeededInitializer, NoUniformShareWhenAskedAndUniformFallbackWithoutHypothes
   EXPECT_LT(near(pf, 5.5, 2.0, 1.0), 300u);
 }
 
+// Only the uniform fallback asks the filter to size its set by KLD sampling: a seeded start is
+// concentrated and capped already.
+TEST(SeededInitializer, AsksForKldSizingOnlyAfterAUniformFallback) {
+  const auto room = test::asymmetricRoom();
+  Ranking one, none;
+  one.hypotheses = {hypothesis(5.5, 2.0, 1.0)};
+  const Ranking* answer = &one;
+  SeededInitParams p;
+  p.fallback.particles = 3000;
+  p.fallback_shrinks.min_particles = 700;
+  SeededInitializer init([&](const auto&) { return *answer; }, p);
+  mrpt::slam::CMonteCarloLocalization2D pf;
+  mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+  EXPECT_FALSE(init.kldResampling().has_value()) << "nothing seeded yet";
+  init.initialize(pf, o, room, frameWithScan());
+  EXPECT_FALSE(init.kldResampling().has_value());
+  answer = &none;
+  init.initialize(pf, o, room, frameWithScan());
+  ASSERT_TRUE(init.kldResampling().has_value());
+  EXPECT_EQ(init.kldResampling()->min_particles, 700u);
+  answer = &one;
+  init.initialize(pf, o, room, frameWithScan());
+  EXPECT_FALSE(init.kldResampling().has_value()) << "a re-seed after a kidnap is seeded again";
+
+  p.fallback_shrinks.enabled = false;
+  SeededInitializer fixed([&](const auto&) { return none; }, p);
+  fixed.initialize(pf, o, room, frameWithScan());
+  EXPECT_FALSE(fixed.kldResampling().has_value());
+}
+
 // The recorded time is "scan to prior" as the bench reports it: it includes the relocalization,
 // here a source that spins for a known CPU time, whether it answers or falls back to uniform.
 TEST(SeededInitializer, RecordsTheCpuTimeFromScanToPrior) {

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "mrpt_krp_plugin/bench/trial_metrics.h"
+#include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/filter/filter_spread.h"
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
 #include "mrpt_krp_plugin/filter/seeded_initializer.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
@@ -99,6 +101,85 @@ TEST(SystemSeededMcl, DetectsAKidnapAndRecoversByReseeding) {
   EXPECT_LE(kidnap_at, 4) << "three bad updates in a row should be enough";
   EXPECT_EQ(reinit_at, kidnap_at + 1);
   EXPECT_LT(std::hypot(last.mean.x - after.truth.back().x, last.mean.y - after.truth.back().y), 0.2);
+}
+
+}  // namespace
+}  // namespace krp
+
+namespace krp {
+namespace {
+
+// With nothing from the relocalizer the filter starts uniform, over the whole map; once it has
+// converged it should track with a seeded start's few hundred particles, not keep them all.
+TEST(SystemSeededMcl, AUniformStartShrinksOnceItConverges) {
+  const auto room = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  TrialParams tp;
+  tp.steps = 8;
+  const Trial t = generateTrial(*room, lidarProfileByName("omni_12m"), tp, 2);
+  const auto steps = trialToSteps(t);
+  const auto run = [&](bool shrink) {
+    SeededInitParams sp;
+    sp.fallback.particles = 20000;
+    sp.fallback_shrinks.enabled = shrink;
+    auto init = std::make_shared<SeededInitializer>([](const auto&) { return Ranking{}; }, sp);
+    MclLocalizer loc(room, init, MclParams{});
+    std::vector<UpdateRecord> u;
+    for (size_t i = 0; i < steps.size(); ++i) u.push_back(makeUpdateRecord(loc.update(steps[i]), t.truth[i], t.distance_m[i]));
+    EXPECT_TRUE(init->lastSeeding()->fell_back_to_uniform);
+    EXPECT_EQ(init->lastSeeding()->particles, 20000u);
+    return u;
+  };
+  const auto shrinking = run(true), fixed = run(false);
+  EXPECT_EQ(shrinking.front().particles, 20000u) << "the first update weighs the whole start";
+  EXPECT_TRUE(evaluateTrial(shrinking, {}).converged);
+  EXPECT_LE(shrinking.back().particles, 1000u) << "converged in one room, yet kept its uniform start's count";
+  EXPECT_GE(shrinking.back().particles, SeededInitParams{}.fallback_shrinks.min_particles);
+  EXPECT_TRUE(evaluateTrial(fixed, {}).converged);
+  EXPECT_EQ(fixed.back().particles, 20000u) << "disabled, the count stays fixed";
+}
+
+// A set split between twin rooms, which no scan tells apart, stays split: however peaked each
+// half is, it must keep its start's count, since the half that KLD sizing would starve may be
+// the right one.
+class TwinCloudsInitializer : public ParticleInitializer {
+ public:
+  TwinCloudsInitializer(mrpt::math::TPose2D pose, double shift_m) : pose_(pose), shift_m_(shift_m) {}
+  std::string name() const override { return "twin-clouds"; }
+  void initialize(mrpt::slam::CMonteCarloLocalization2D& pf, mrpt::bayes::CParticleFilter::TParticleFilterOptions&,
+                  const mrpt::maps::COccupancyGridMap2D&, const mrpt::obs::CSensoryFrame&) override {
+    Rng rng(7);
+    pf.m_particles.resize(kParticles);
+    for (size_t i = 0; i < kParticles; ++i) {
+      const double dx = i % 2 ? shift_m_ : 0.0;
+      pf.m_particles[i].d = {rng.normal(pose_.x + dx, 0.3), rng.normal(pose_.y, 0.3), rng.normal(pose_.phi, 0.1)};
+      pf.m_particles[i].log_w = 0.0;
+    }
+  }
+  std::optional<KldSampleSizeParams> kldResampling() const override { return KldSampleSizeParams{}; }
+  static constexpr size_t kParticles = 20000;
+
+ private:
+  mrpt::math::TPose2D pose_;
+  double shift_m_;
+};
+
+TEST(SystemSeededMcl, ASetSplitBetweenLookAlikePlacesKeepsItsCount) {
+  const auto rooms = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::twinRooms());
+  TrialParams tp;
+  tp.steps = 4;
+  // The first trial that starts in the west room, so that its twin lies east.
+  Trial t;
+  for (uint64_t seed = 1; seed < 50 && (t.truth.empty() || t.truth[0].x > test::twinRoomsShiftM()); ++seed)
+    t = generateTrial(*rooms, lidarProfileByName("omni_12m"), tp, seed);
+  ASSERT_LT(t.truth[0].x, test::twinRoomsShiftM());
+  MclLocalizer loc(rooms, std::make_shared<TwinCloudsInitializer>(t.truth[0], test::twinRoomsShiftM()), MclParams{});
+  const auto steps = trialToSteps(t);
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const auto e = loc.update(steps[i]);
+    ASSERT_FALSE(isConcentrated(filterSpread(e.cov), KldSampleSizeParams{}.only_once_concentrated))
+        << "update " << i << ": the twin rooms should keep the set split";
+    EXPECT_EQ(e.particles, TwinCloudsInitializer::kParticles) << "update " << i;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <mrpt/math/TPose2D.h>
+
+#include <cstddef>
+#include <vector>
+
+#include "mrpt_krp_plugin/filter/filter_spread.h"
+
+namespace krp {
+
+/// KLD sampling's sample size (Fox 2003), as amcl sizes its particle set: enough particles that,
+/// with probability z, the set's histogram is within `epsilon` (KL divergence) of the posterior's,
+/// given how many histogram bins the set occupies. A converged filter occupies a few bins and
+/// needs a few hundred particles; one spread over a building needs its whole cap.
+struct KldSampleSizeParams {
+  /// Off: the filter keeps its start's particle count to the end, as MRPT's fixed-size MCL does.
+  bool enabled = true;
+  double epsilon = 0.01;  ///< amcl `kld_err`
+  /// amcl `kld_z`, used as the normal quantile itself, as amcl does (see AmclKldParams).
+  double z = 0.99;
+  double bin_xy_m = 0.5;      ///< amcl's histogram bins [m]
+  double bin_phi_deg = 10.0;  ///< [deg]
+  /// Never fewer: the seeded start's own floor (SeededInitParams::min_particles), so a filter
+  /// that shrank has as many particles as one the relocalizer seeded.
+  std::size_t min_particles = 500;
+  /// Sized by KLD only once the weighted set is this concentrated: from a uniform start the first
+  /// scans' weights are so peaked that KLD would cut a still-undecided set to its floor, dropping
+  /// the places that later scans might favour. Until then the set keeps (or regains) its start's
+  /// count.
+  ConcentrationThresholds only_once_concentrated;
+};
+
+/// The KLD bound for `occupied_bins` bins (0 for one bin or none: any sample describes it).
+std::size_t kldBound(std::size_t occupied_bins, double epsilon, double z);
+
+/// How many of `draws` (poses drawn from the posterior, in random order) KLD sampling keeps:
+/// the shortest prefix that is at least the bound for the bins it occupies and at least
+/// `min_particles`; all of them when no prefix is. The caller's draws are its cap.
+std::size_t kldSampleCount(const std::vector<mrpt::math::TPose2D>& draws, const KldSampleSizeParams& params);
+
+}  // namespace krp
