@@ -5,10 +5,11 @@ Usage: guard_budget_report.py [--made-by SCRIPT] RUNS_DIR REPORT.md COMMAND_LINE
 RUNS_DIR holds <world>/<setting>/{trials,updates}.csv; each world's 4M_default run is the one
 the others are compared with. --made-by names the script that ran them (default: this report's).
 """
-import csv
 import statistics
 import sys
 from pathlib import Path
+
+from bench_csv import OUTCOME, percent, read
 
 SETTING_ORDER = ("1M_settled", "1M", "2M", "4M_default", "no_limit", "4M_500k_per_update", "4M_250k_per_update")
 SETTING_NAMES = {
@@ -21,16 +22,6 @@ SETTING_NAMES = {
     "4M_250k_per_update": "4M, 250k per update",
 }
 BASELINE = "4M_default"
-OUTCOME = ("converged", "confident_but_wrong", "confident_and_right")
-
-
-def read(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def percent(count, total):
-    return f"{100.0 * count / total:.3g} %" if total else "-"
 
 
 def seconds(values, pick):

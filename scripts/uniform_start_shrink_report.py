@@ -6,22 +6,13 @@ once converged (kld, the default).
 Usage: uniform_start_shrink_report.py RUNS_DIR REPORT.md MADE_BY COMMAND_LINE...
 RUNS_DIR holds fixed/ and kld/, each with krp-bench's trials.csv and updates.csv.
 """
-import csv
 import statistics
 import sys
 from pathlib import Path
 
+from bench_csv import OUTCOME, percent, read
+
 SETTINGS = (("fixed", "keeps its count (--seeded-uniform-start-fixed)"), ("kld", "shrinks by KLD sampling (default)"))
-OUTCOME = ("converged", "confident_but_wrong", "confident_and_right")
-
-
-def read(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def percent(count, total):
-    return f"{100.0 * count / total:.3g} %" if total else "-"
 
 
 def median(values, fmt):
