@@ -4,6 +4,8 @@
 #include <onnxruntime_cxx_api.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "mrpt_krp_plugin/common/input_error.h"
@@ -32,16 +34,28 @@ struct OnnxModel::Session {
   Ort::Session session{nullptr};
 };
 
-OnnxModel::OnnxModel(const std::string& path, const OnnxRuntimeParams& params)
-    : path_(path), session_(std::make_unique<Session>()) {
+OnnxModelFile readOnnxModelFile(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, "model file not found");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "model file cannot be read");
+  OnnxModelFile file{path, std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>())};
+  if (in.bad()) throw InputError(path, "model file could not be read to its end");
+  return file;
+}
+
+OnnxModel::OnnxModel(const std::string& path, const OnnxRuntimeParams& params)
+    : OnnxModel(readOnnxModelFile(path), params) {}
+
+OnnxModel::OnnxModel(const OnnxModelFile& file, const OnnxRuntimeParams& params)
+    : path_(file.path), session_(std::make_unique<Session>()) {
+  const std::string& path = file.path;
   Ort::SessionOptions options;
   options.SetIntraOpNumThreads(params.intra_op_threads);
   options.SetInterOpNumThreads(params.inter_op_threads);
   options.SetExecutionMode(ExecutionMode::ORT_SEQUENTIAL);
   options.SetGraphOptimizationLevel(GraphOptimizationLevel::ORT_ENABLE_ALL);
   try {
-    session_->session = Ort::Session(environment(), path.c_str(), options);
+    session_->session = Ort::Session(environment(), file.bytes.data(), file.bytes.size(), options);
   } catch (const Ort::Exception& e) {
     throw InputError(path, std::string("not a model onnxruntime can load: ") + e.what());
   }

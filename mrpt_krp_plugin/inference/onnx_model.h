@@ -21,12 +21,25 @@ struct Tensor {
   std::vector<float> values;
 };
 
+/// An ONNX model file read whole into memory, and where it came from (for messages). A model is
+/// loaded from these bytes, so that bytes checked before loading (requireManifestModelFile) are
+/// the bytes that run, even if the file is replaced meanwhile. The project's exported models
+/// keep their weights inside the file (no external data files).
+struct OnnxModelFile {
+  std::string path;
+  std::vector<char> bytes;
+};
+
+/// Reads `path` whole: InputError naming it when it is missing or cannot be read.
+OnnxModelFile readOnnxModelFile(const std::string& path);
+
 /// One ONNX model with a single float input and a single float output, run by onnxruntime.
 /// Loading throws InputError naming the file (missing, unreadable, not an ONNX model, or not
 /// one input and one output).
 class OnnxModel {
  public:
   OnnxModel(const std::string& path, const OnnxRuntimeParams& params = {});
+  OnnxModel(const OnnxModelFile& file, const OnnxRuntimeParams& params = {});
   ~OnnxModel();
   OnnxModel(const OnnxModel&) = delete;
   OnnxModel& operator=(const OnnxModel&) = delete;

@@ -49,6 +49,20 @@ TEST(OnnxModel, TruncatedShippedModelIsAnInputError) {
   fs::remove(path);
 }
 
+// What was read (and checked against the manifest) is what runs: a file replaced after it was
+// read does not reach the session.
+TEST(OnnxModel, LoadsTheBytesItWasGivenNotTheFileAsItIsNow) {
+  const fs::path path = fs::temp_directory_path() / ("krp_replaced_" + std::to_string(::getpid()) + ".onnx");
+  fs::copy_file(kShippedModels + "/zone_classifier.onnx", path, fs::copy_options::overwrite_existing);
+  const OnnxModelFile file = readOnnxModelFile(path.string());
+  std::ofstream(path, std::ios::trunc) << "this is not a protobuf";
+  OnnxModel m(file);
+  EXPECT_EQ(m.path(), path.string());
+  EXPECT_EQ(m.inputShape().size(), 4u);
+  EXPECT_THROW(OnnxModel again(path.string()), InputError) << "the file on disk is no model now";
+  fs::remove(path);
+}
+
 TEST(ShippedModels, ClassifierGivesAProbabilityPerZone) {
   const auto manifest = readModelManifest(kShippedModels);
   const ZoneClassifier classifier(manifest);
