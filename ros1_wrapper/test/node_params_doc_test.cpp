@@ -113,5 +113,17 @@ TEST(RosNodeParams, TheTurnAndZoneSearchSettingsReachTheLearnedRelocalizer) {
   EXPECT_EQ(NodeParams{}.hypothesisSource().learned.top_turns, RelocalizerParams{}.top_turns);
 }
 
+// The uniform start's shrinking follows the node's switch, down to the node's seeded floor
+// (which max_particles may lower).
+TEST(RosNodeParams, TheUniformStartShrinksToTheNodesSeededFloor) {
+  NodeParams p;
+  EXPECT_TRUE(p.seeded().fallback_shrinks.enabled);
+  EXPECT_EQ(p.seeded().fallback_shrinks.min_particles, p.seeded().min_particles);
+  p.max_particles = 300;
+  EXPECT_EQ(p.seeded().fallback_shrinks.min_particles, 300u);
+  p.shrink_uniform_start = false;
+  EXPECT_FALSE(p.seeded().fallback_shrinks.enabled);
+}
+
 }  // namespace
 }  // namespace krp::ros1
