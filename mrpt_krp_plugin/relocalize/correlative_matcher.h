@@ -110,11 +110,13 @@ class CorrelativeMatcher {
   /// ends with the same answer, its request's max_nodes_scored counting every slice.
   bool resume(Search& search, long long max_nodes) const;
 
-  /// Nodes whose bound was computed in the last match() (a measure of its cost).
+  /// Nodes whose bound was computed in the last match(), or by the search last begun with
+  /// startSearch() and its resume()s so far (a measure of its cost).
   long long lastNodesScored() const { return nodes_scored_; }
   /// Of those, the ones whose bound stopped early (CorrelativeMatcherParams::stop_bound_early).
   long long lastNodesStoppedEarly() const { return nodes_stopped_early_; }
-  /// The last match() ran out of MatchRequest::max_nodes_scored: its answer may not be the best.
+  /// The last match() (or that search) ran out of MatchRequest::max_nodes_scored: its answer may
+  /// not be the best.
   bool lastSearchCutShort() const { return cut_short_; }
   const CorrelativeMatcherParams& params() const { return params_; }
 

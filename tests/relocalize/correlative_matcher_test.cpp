@@ -325,13 +325,19 @@ TEST(CorrelativeMatcher, ASearchRunInSlicesEndsAsOneRunAtOnce) {
       ++slices;
       EXPECT_FALSE(search->finished());
       // The first slice also bounds the roots; the others stop within one node's children.
-      if (slices > 1) EXPECT_LE(search->nodesScored() - before, slice + 4) << "slice " << slices;
+      if (slices > 1) {
+        EXPECT_LE(search->nodesScored() - before, slice + 4) << "slice " << slices;
+      }
       before = search->nodesScored();
     }
     EXPECT_GE(slices, budget > 0 ? 3 : 7) << "budget " << budget;
     EXPECT_TRUE(search->finished());
     EXPECT_EQ(search->nodesScored(), at_once_nodes) << "budget " << budget;
     EXPECT_EQ(search->cutShort(), at_once_cut) << "budget " << budget;
+    // What krp-bench-matcher reads after the guard's search: that search's count alone, not the
+    // match() before it added in.
+    EXPECT_EQ(matcher.lastNodesScored(), search->nodesScored()) << "budget " << budget;
+    EXPECT_EQ(matcher.lastSearchCutShort(), search->cutShort()) << "budget " << budget;
     ASSERT_EQ(search->solution().has_value(), !at_once.empty()) << "budget " << budget;
     if (!at_once.empty()) {
       EXPECT_EQ(search->solution()->score, at_once[0].score);
