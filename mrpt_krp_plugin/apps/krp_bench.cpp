@@ -164,7 +164,6 @@ static int run(int argc, char** argv) {
     if (args.integer(flag) < 1) throw krp::InputError(std::string("--") + flag, "must be 1 or more");
   cfg.method_settings.seeded.particles_per_hypothesis = static_cast<size_t>(args.integer("seeded-particles-per-hypothesis"));
   cfg.method_settings.seeded.min_particles = static_cast<size_t>(args.integer("seeded-min-particles"));
-  cfg.method_settings.seeded.fallback_shrinks.min_particles = cfg.method_settings.seeded.min_particles;
   cfg.method_settings.seeded.fallback_shrinks.enabled = !args.flag("seeded-uniform-start-fixed");
   cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integerInRange("top-zones", 0, kMaxZones));
   const auto top_turns = args.integer("top-turns");

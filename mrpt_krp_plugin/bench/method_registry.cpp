@@ -9,19 +9,21 @@ namespace krp {
 
 std::vector<std::string> methodNames() {
   return {"uniform-mcl",           "amcl-kld",       "amcl-kld-50k", "seeded", "seeded-no-uniform", "seeded-no-cross-check",
-          "seeded-no-guard",       "seeded-keypoints-only", "global-matcher", "global-matcher-guarded"};
+          "seeded-no-guard",       "seeded-keypoints-only", "seeded-spread-count", "global-matcher",
+          "global-matcher-guarded"};
 }
 
 namespace {
 constexpr const char* kKeypointsOnly = "seeded-keypoints-only";
 constexpr const char* kNoCrossCheck = "seeded-no-cross-check";
 constexpr const char* kNoGuard = "seeded-no-guard";
+constexpr const char* kSpreadCount = "seeded-spread-count";
 constexpr const char* kMatcherGuarded = "global-matcher-guarded";
 }  // namespace
 
 bool methodNeedsModels(const std::string& name) {
   return name == "seeded" || name == "seeded-no-uniform" || name == kNoCrossCheck || name == kNoGuard ||
-         name == kKeypointsOnly;
+         name == kKeypointsOnly || name == kSpreadCount;
 }
 bool methodUsesLookAlikeGuard(const std::string& name) {
   return (methodNeedsModels(name) && name != kNoGuard && name != kKeypointsOnly) || name == kMatcherGuarded;
@@ -74,6 +76,7 @@ std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, co
     const auto relocalizer = found == resources.relocalizers.end() ? nullptr : found->second;
     if (!relocalizer) throw InputError("method '" + name + "'", "needs trained models (a models folder with manifest.json)");
     if (name == "seeded-no-uniform") seeded.uniform_fraction = 0.0;
+    if (name == kSpreadCount) seeded.count_from_spread.enabled = true;
     return std::make_shared<SeededInitializer>(
         [relocalizer](const mrpt::obs::CObservation2DRangeScan& scan) { return relocalizer->relocalize(scan).ranking; },
         seeded, name);

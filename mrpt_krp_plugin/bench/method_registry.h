@@ -45,7 +45,9 @@ struct MethodResources {
 /// `seeded-no-cross-check` (no check of the best answer for look-alike places),
 /// `seeded-no-guard` (the filter does not check its convergence for look-alike places),
 /// `seeded-keypoints-only` (what the two models and the verification achieve on their own: no
-/// zone search, no cross-check, no guard), `global-matcher`, `global-matcher-guarded` (the
+/// zone search, no cross-check, no guard), `seeded-spread-count` (`seeded` with its particle
+/// count from the hypotheses' spread: SeededInitParams::count_from_spread), `global-matcher`,
+/// `global-matcher-guarded` (the
 /// same with the look-alike guard: the ROS node's track mode with its default backend).
 std::vector<std::string> methodNames();
 

@@ -32,13 +32,14 @@ std::size_t kldBound(std::size_t occupied_bins, double epsilon, double z) {
   return static_cast<std::size_t>(std::ceil(k / (2.0 * epsilon) * b * b * b));
 }
 
-std::size_t kldSampleCount(const std::vector<mrpt::math::TPose2D>& draws, const KldSampleSizeParams& params) {
+std::size_t kldSampleCount(const std::vector<mrpt::math::TPose2D>& draws, const KldSampleSizeParams& params,
+                           std::size_t min_particles) {
   const double bin_phi = params.bin_phi_deg * M_PI / 180.0;
   std::unordered_set<uint64_t> bins;
   for (std::size_t n = 0; n < draws.size(); ++n) {
     bins.insert(binKey(draws[n], params.bin_xy_m, bin_phi));
     const std::size_t kept = n + 1;
-    if (kept >= params.min_particles && kept >= kldBound(bins.size(), params.epsilon, params.z)) return kept;
+    if (kept >= min_particles && kept >= kldBound(bins.size(), params.epsilon, params.z)) return kept;
   }
   return draws.size();
 }

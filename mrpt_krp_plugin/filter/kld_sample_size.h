@@ -22,9 +22,6 @@ struct KldSampleSizeParams {
   double z = 0.99;
   double bin_xy_m = 0.5;      ///< amcl's histogram bins [m]
   double bin_phi_deg = 10.0;  ///< [deg]
-  /// Never fewer: the seeded start's own floor (SeededInitParams::min_particles), so a filter
-  /// that shrank has as many particles as one the relocalizer seeded.
-  std::size_t min_particles = 500;
   /// Sized by KLD only once the weighted set is this concentrated: from a uniform start the first
   /// scans' weights are so peaked that KLD would cut a still-undecided set to its floor, dropping
   /// the places that later scans might favour. Until then the set keeps (or regains) its start's
@@ -38,6 +35,15 @@ std::size_t kldBound(std::size_t occupied_bins, double epsilon, double z);
 /// How many of `draws` (poses drawn from the posterior, in random order) KLD sampling keeps:
 /// the shortest prefix that is at least the bound for the bins it occupies and at least
 /// `min_particles`; all of them when no prefix is. The caller's draws are its cap.
-std::size_t kldSampleCount(const std::vector<mrpt::math::TPose2D>& draws, const KldSampleSizeParams& params);
+std::size_t kldSampleCount(const std::vector<mrpt::math::TPose2D>& draws, const KldSampleSizeParams& params,
+                           std::size_t min_particles);
+
+/// What an initializer asks of the filter's resampling: KLD sizing with `params`, never below
+/// `min_particles` (the seeded start's own floor, so that a filter that shrank has as many
+/// particles as one the relocalizer seeded).
+struct KldResampling {
+  KldSampleSizeParams params;
+  std::size_t min_particles = 0;
+};
 
 }  // namespace krp

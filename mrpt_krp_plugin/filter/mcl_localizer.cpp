@@ -82,7 +82,7 @@ void MclLocalizer::resampleSystematicIfNeeded() {
   const size_t draws = kld_resampling_ ? start_particles_ : n;
   const bool size_by_kld =
       kld_resampling_ &&
-      isConcentrated(filterSpread(std::get<0>(pf_.getCovarianceAndMean())), kld_resampling_->only_once_concentrated);
+      isConcentrated(filterSpread(std::get<0>(pf_.getCovarianceAndMean())), kld_resampling_->params.only_once_concentrated);
   const double step = total / static_cast<double>(draws);
   double u = rng.uniform(0.0, step);
   std::vector<mrpt::math::TPose2D> picked(draws);
@@ -94,9 +94,8 @@ void MclLocalizer::resampleSystematicIfNeeded() {
   size_t kept = draws;
   if (size_by_kld) {
     // Systematic draws come in the order of the old set: shuffled, any prefix is a fair sample.
-    for (size_t i = draws; i > 1; --i)
-      std::swap(picked[i - 1], picked[static_cast<size_t>(rng.uniformInt(0, static_cast<int>(i) - 1))]);
-    kept = kldSampleCount(picked, *kld_resampling_);
+    rng.shuffle(picked);
+    kept = kldSampleCount(picked, kld_resampling_->params, kld_resampling_->min_particles);
   }
   pf_.m_particles.resize(kept);
   for (size_t i = 0; i < kept; ++i) {

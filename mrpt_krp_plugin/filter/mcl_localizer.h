@@ -149,7 +149,7 @@ class MclLocalizer {
   uint64_t resample_draws_ = 0;
   /// The initializer's KLD sizing for this start (none: fixed count), and the start's count,
   /// which caps it.
-  std::optional<KldSampleSizeParams> kld_resampling_;
+  std::optional<KldResampling> kld_resampling_;
   std::size_t start_particles_ = 0;
   /// Made with the filter when kidnap detection is on, or with a guard that has a fit floor: its
   /// distance field is map preparation, not charged to an update.

@@ -29,10 +29,10 @@ class ParticleInitializer {
                           const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) = 0;
 
   /// After initialize(): how the filter sizes its set at each of its own resamplings. Empty
-  /// (the default): the start's count stays to the end, as in MRPT's fixed-size MCL; with
-  /// params, KLD sampling picks the count, never above the start's. MRPT's own KLD path
+  /// (the default): the start's count stays to the end, as in MRPT's fixed-size MCL; given,
+  /// KLD sampling picks the count, never above the start's. MRPT's own KLD path
   /// (`pf_options.adaptiveSampleSize`) does not ask.
-  virtual std::optional<KldSampleSizeParams> kldResampling() const { return std::nullopt; }
+  virtual std::optional<KldResampling> kldResampling() const { return std::nullopt; }
 };
 
 }  // namespace krp

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/common/thread_cpu_time.h"
+#include "mrpt_krp_plugin/filter/kld_sample_size.h"
 #include "mrpt_krp_plugin/map/grid_image.h"
 
 namespace krp {
@@ -23,6 +25,41 @@ std::vector<cv::Point> freeCells(const mrpt::maps::COccupancyGridMap2D& map, dou
   return maskedCells(freeMask(map, p));
 }
 
+/// One hypothesis's Gaussian in the prior, and its share of the seeded particles.
+struct Cloud {
+  mrpt::math::TPose2D mean;
+  double share = 0, std_x = 0, std_y = 0, std_phi = 0;
+  mrpt::math::TPose2D draw(Rng& rng) const {
+    return {rng.normal(mean.x, std_x), rng.normal(mean.y, std_y), rng.normal(mean.phi, std_phi)};
+  }
+};
+
+/// `count` draws split between the clouds by share, cloud after cloud (the fixed-count rule).
+std::vector<mrpt::math::TPose2D> drawsPerCloud(const std::vector<Cloud>& clouds, std::size_t count, Rng& rng) {
+  std::vector<mrpt::math::TPose2D> out;
+  out.reserve(count);
+  for (std::size_t i = 0; i < clouds.size() && out.size() < count; ++i) {
+    const std::size_t left = count - out.size();
+    const std::size_t n = i + 1 == clouds.size() ? left
+                                                 : std::min(left, static_cast<std::size_t>(std::lround(clouds[i].share * count)));
+    for (std::size_t k = 0; k < n; ++k) out.push_back(clouds[i].draw(rng));
+  }
+  return out;
+}
+
+/// `count` draws from the mixture, each from a cloud picked by its share, so that any prefix is
+/// a fair sample of the whole prior (which KLD sampling's prefix rule needs).
+std::vector<mrpt::math::TPose2D> mixtureDraws(const std::vector<Cloud>& clouds, std::size_t count, Rng& rng) {
+  std::vector<mrpt::math::TPose2D> out(count);
+  for (auto& pose : out) {
+    double u = rng.uniform(0.0, 1.0);
+    std::size_t i = 0;
+    while (i + 1 < clouds.size() && u >= clouds[i].share) u -= clouds[i++].share;
+    pose = clouds[i].draw(rng);
+  }
+  return out;
+}
+
 }  // namespace
 
 SeededInitializer::SeededInitializer(HypothesisSource source, SeededInitParams params, std::string name)
@@ -33,8 +70,9 @@ SeededInitializer::SeededInitializer(HypothesisSource source, SeededInitParams p
     throw InputError("seeded min_particles", "exceeds max_particles");
 }
 
-std::optional<KldSampleSizeParams> SeededInitializer::kldResampling() const {
-  if (last_ && last_->fell_back_to_uniform && params_.fallback_shrinks.enabled) return params_.fallback_shrinks;
+std::optional<KldResampling> SeededInitializer::kldResampling() const {
+  if (last_ && last_->fell_back_to_uniform && params_.fallback_shrinks.enabled)
+    return KldResampling{params_.fallback_shrinks, params_.min_particles};
   return std::nullopt;
 }
 
@@ -58,32 +96,47 @@ void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
     return;
   }
 
-  const auto seeded_target = params_.particles_per_hypothesis * hyps.size();
-  const auto total = std::clamp(
-      static_cast<std::size_t>(std::ceil(static_cast<double>(seeded_target) / (1.0 - params_.uniform_fraction))),
-      params_.min_particles, params_.max_particles);
-  const auto cells = freeCells(map, params_.free_cell_min_freeness);
-  rec.uniform_particles = cells.empty() ? 0 : static_cast<std::size_t>(std::lround(params_.uniform_fraction * total));
-  const std::size_t seeded = total - rec.uniform_particles;
-
+  // Each hypothesis's cloud: its alignment covariance, clamped to a concentrated yet trackable spread.
+  std::vector<Cloud> clouds;
   double confidence_sum = 0;
   for (const auto& h : hyps) confidence_sum += h.confidence;
+  for (const auto& h : hyps) {
+    // Equal shares when every confidence is zero: the hypotheses are all we have.
+    const double share = confidence_sum > 0 ? h.confidence / confidence_sum : 1.0 / hyps.size();
+    clouds.push_back({h.pose, share, clampedStd(h.cov(0, 0), params_.min_std_xy_m, params_.max_std_xy_m),
+                      clampedStd(h.cov(1, 1), params_.min_std_xy_m, params_.max_std_xy_m),
+                      clampedStd(h.cov(2, 2), params_.min_std_yaw_deg * kDegToRad, params_.max_std_yaw_deg * kDegToRad)});
+  }
+  const auto cells = freeCells(map, params_.free_cell_min_freeness);
+  // The total counts the uniform share the map asks for; with no free cell it goes to the clouds.
+  const auto uniform_count = [&](std::size_t total) {
+    return cells.empty() ? std::size_t{0} : static_cast<std::size_t>(std::lround(params_.uniform_fraction * total));
+  };
+  const auto total_for = [&](std::size_t seeded) {
+    return std::clamp(static_cast<std::size_t>(std::ceil(static_cast<double>(seeded) / (1.0 - params_.uniform_fraction))),
+                      params_.min_particles, params_.max_particles);
+  };
   Rng rng(params_.seed);
+  std::vector<mrpt::math::TPose2D> seeded;
+  std::size_t total = 0;
+  if (params_.count_from_spread.enabled) {
+    // Draws up to the cap, in random order, then keeps the prefix that KLD sampling asks for.
+    // Its floor is min_particles' seeded part: the bound for the one bin a first draw occupies is
+    // zero, so without a floor the rule would stop there, as KLD sampling never starts that small.
+    const std::size_t cap = params_.max_particles - uniform_count(params_.max_particles);
+    seeded = mixtureDraws(clouds, cap, rng);
+    const std::size_t floor = params_.min_particles - uniform_count(params_.min_particles);
+    total = total_for(kldSampleCount(seeded, params_.count_from_spread, floor));
+    seeded.resize(std::min(cap, total - uniform_count(total)));
+  } else {
+    total = total_for(params_.particles_per_hypothesis * hyps.size());
+    seeded = drawsPerCloud(clouds, total - uniform_count(total), rng);
+  }
+  rec.uniform_particles = total - seeded.size();
   pf.m_particles.clear();
   pf.m_particles.resize(total);
   std::size_t next = 0;
-  for (size_t i = 0; i < hyps.size() && next < seeded; ++i) {
-    const auto& h = hyps[i];
-    // Equal shares when every confidence is zero: the hypotheses are all we have.
-    const double share = confidence_sum > 0 ? h.confidence / confidence_sum : 1.0 / hyps.size();
-    const bool last = i + 1 == hyps.size();
-    const std::size_t n = last ? seeded - next : std::min(seeded - next, static_cast<std::size_t>(std::lround(share * seeded)));
-    const double sx = clampedStd(h.cov(0, 0), params_.min_std_xy_m, params_.max_std_xy_m);
-    const double sy = clampedStd(h.cov(1, 1), params_.min_std_xy_m, params_.max_std_xy_m);
-    const double sphi = clampedStd(h.cov(2, 2), params_.min_std_yaw_deg * kDegToRad, params_.max_std_yaw_deg * kDegToRad);
-    for (std::size_t k = 0; k < n; ++k, ++next)
-      pf.m_particles[next].d = {rng.normal(h.pose.x, sx), rng.normal(h.pose.y, sy), rng.normal(h.pose.phi, sphi)};
-  }
+  for (; next < seeded.size(); ++next) pf.m_particles[next].d = seeded[next];
   for (; next < total; ++next) {
     const auto& cell = cells[static_cast<size_t>(rng.uniformInt(0, static_cast<int>(cells.size()) - 1))];
     const double half = 0.5 * map.getResolution();

@@ -40,9 +40,8 @@ std::vector<std::pair<int, int>> candidatePairs(const std::vector<Correspondence
     }
   }
   if (static_cast<int>(all.size()) <= p.max_pairs) return all;
-  // Too many to try them all: a seeded random subset (partial Fisher-Yates).
-  Rng rng(p.seed);
-  for (int k = 0; k < p.max_pairs; ++k) std::swap(all[k], all[rng.uniformInt(k, static_cast<int>(all.size()) - 1)]);
+  // Too many to try them all: a seeded random subset.
+  Rng(p.seed).sampleToFront(all, static_cast<std::size_t>(p.max_pairs));
   all.resize(p.max_pairs);
   return all;
 }

@@ -174,7 +174,6 @@ SeededInitParams NodeParams::seeded() const {
   s.min_particles = std::min(s.min_particles, s.max_particles);
   s.uniform_fraction = uniform_fraction;
   s.fallback_shrinks.enabled = shrink_uniform_start;
-  s.fallback_shrinks.min_particles = s.min_particles;
   return s;
 }
 

@@ -118,9 +118,8 @@ TEST(RosNodeParams, TheTurnAndZoneSearchSettingsReachTheLearnedRelocalizer) {
 TEST(RosNodeParams, TheUniformStartShrinksToTheNodesSeededFloor) {
   NodeParams p;
   EXPECT_TRUE(p.seeded().fallback_shrinks.enabled);
-  EXPECT_EQ(p.seeded().fallback_shrinks.min_particles, p.seeded().min_particles);
   p.max_particles = 300;
-  EXPECT_EQ(p.seeded().fallback_shrinks.min_particles, 300u);
+  EXPECT_EQ(p.seeded().min_particles, 300u) << "the floor a uniform start shrinks to";
   p.shrink_uniform_start = false;
   EXPECT_FALSE(p.seeded().fallback_shrinks.enabled);
 }

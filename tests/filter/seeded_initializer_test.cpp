@@ -83,6 +83,43 @@ TEST(SeededInitializer, NoUniformShareWhenAskedAndUniformFallbackWithoutHypothes
   EXPECT_LT(near(pf, 5.5, 2.0, 1.0), 300u);
 }
 
+PoseHypothesis withStd(PoseHypothesis h, double std_xy_m, double std_yaw_rad) {
+  h.cov(0, 0) = h.cov(1, 1) = std_xy_m * std_xy_m;
+  h.cov(2, 2) = std_yaw_rad * std_yaw_rad;
+  return h;
+}
+
+// With count_from_spread the prior's own KLD bound sizes the set: one tight pose needs few
+// particles, two tight poses more, a wide one the cap.
+TEST(SeededInitializer, CountFromSpreadGrowsWithTheHypothesesSpread) {
+  const auto room = test::asymmetricRoom();
+  SeededInitParams p;
+  p.count_from_spread.enabled = true;
+  p.min_particles = 100;
+  const auto count = [&](std::vector<PoseHypothesis> hyps) {
+    Ranking r;
+    r.hypotheses = std::move(hyps);
+    SeededInitializer init([&](const auto&) { return r; }, p);
+    mrpt::slam::CMonteCarloLocalization2D pf;
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+    init.initialize(pf, o, room, frameWithScan());
+    EXPECT_EQ(init.lastSeeding()->particles, pf.size());
+    EXPECT_NEAR(static_cast<double>(init.lastSeeding()->uniform_particles), p.uniform_fraction * pf.size(), 1.0);
+    return pf.size();
+  };
+  const auto tight = withStd(hypothesis(5.5, 2.0, 1.0), 0.01, 0.001);  // clamped to min_std_*
+  const auto one_tight = count({tight});
+  const auto two_tight = count({tight, withStd(hypothesis(1.5, 5.0, 1.0), 0.01, 0.001)});
+  const auto one_wide = count({withStd(hypothesis(5.5, 2.0, 1.0), 0.8, 0.3)});
+  EXPECT_GT(one_tight, p.min_particles) << "a 0.15 m, 3 deg cloud spans a few 0.5 m, 10 deg bins";
+  EXPECT_LT(one_tight, 2000u);
+  EXPECT_GT(two_tight, one_tight * 3 / 2) << "a second place doubles the occupied bins";
+  EXPECT_EQ(one_wide, p.max_particles) << "a 0.8 m, 17 deg cloud needs more than the cap";
+  // Off (the default), the count is the fixed rule's whatever the spread: ceil(250 / 0.95).
+  p.count_from_spread.enabled = false;
+  EXPECT_EQ(count({withStd(hypothesis(5.5, 2.0, 1.0), 0.8, 0.3)}), 264u);
+}
+
 // Only the uniform fallback asks the filter to size its set by KLD sampling: a seeded start is
 // concentrated and capped already.
 TEST(SeededInitializer, AsksForKldSizingOnlyAfterAUniformFallback) {
@@ -92,7 +129,7 @@ TEST(SeededInitializer, AsksForKldSizingOnlyAfterAUniformFallback) {
   const Ranking* answer = &one;
   SeededInitParams p;
   p.fallback.particles = 3000;
-  p.fallback_shrinks.min_particles = 700;
+  p.min_particles = 700;
   SeededInitializer init([&](const auto&) { return *answer; }, p);
   mrpt::slam::CMonteCarloLocalization2D pf;
   mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
@@ -102,7 +139,7 @@ TEST(SeededInitializer, AsksForKldSizingOnlyAfterAUniformFallback) {
   answer = &none;
   init.initialize(pf, o, room, frameWithScan());
   ASSERT_TRUE(init.kldResampling().has_value());
-  EXPECT_EQ(init.kldResampling()->min_particles, 700u);
+  EXPECT_EQ(init.kldResampling()->min_particles, 700u) << "the seeded floor, whatever the start";
   answer = &one;
   init.initialize(pf, o, room, frameWithScan());
   EXPECT_FALSE(init.kldResampling().has_value()) << "a re-seed after a kidnap is seeded again";

@@ -133,7 +133,7 @@ TEST(SystemSeededMcl, AUniformStartShrinksOnceItConverges) {
   EXPECT_EQ(shrinking.front().particles, 20000u) << "the first update weighs the whole start";
   EXPECT_TRUE(evaluateTrial(shrinking, {}).converged);
   EXPECT_LE(shrinking.back().particles, 1000u) << "converged in one room, yet kept its uniform start's count";
-  EXPECT_GE(shrinking.back().particles, SeededInitParams{}.fallback_shrinks.min_particles);
+  EXPECT_GE(shrinking.back().particles, SeededInitParams{}.min_particles);
   EXPECT_TRUE(evaluateTrial(fixed, {}).converged);
   EXPECT_EQ(fixed.back().particles, 20000u) << "disabled, the count stays fixed";
 }
@@ -155,7 +155,7 @@ class TwinCloudsInitializer : public ParticleInitializer {
       pf.m_particles[i].log_w = 0.0;
     }
   }
-  std::optional<KldSampleSizeParams> kldResampling() const override { return KldSampleSizeParams{}; }
+  std::optional<KldResampling> kldResampling() const override { return KldResampling{{}, SeededInitParams{}.min_particles}; }
   static constexpr size_t kParticles = 20000;
 
  private:
