@@ -19,6 +19,9 @@ using krp::apps::CliArgs;
 using krp::apps::kMaxParticles;
 using krp::apps::kMaxZones;
 
+/// More resamplings in a row than any run has updates: a uniform start that never shrinks.
+constexpr long long kMaxShrinkWait = 100000;
+
 static std::string methodList() {
   std::string s;
   for (const auto& m : krp::methodNames()) s += (s.empty() ? "" : ",") + m;
@@ -63,6 +66,9 @@ static int run(int argc, char** argv) {
                 {"seeded-uniform-start-fixed", "", "seeded methods: a filter that started uniform (no hypothesis) "
                  "keeps its count to the end instead of shrinking by KLD sampling once converged "
                  "(SeededInitParams::fallback_shrinks off; the seeded filter before it)", ""},
+                {"seeded-uniform-start-shrinks-after", "N", "seeded methods: a uniform start shrinks only once its "
+                 "set has been concentrated at N resamplings in a row (KldSampleSizeParams::concentrated_resamplings)",
+                 std::to_string(krp::KldSampleSizeParams{}.concentrated_resamplings)},
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"top-turns", "N", "seeded, wall-aligned models: submap turns the keypoint model runs on (the "
                  "classifier's surest)", std::to_string(krp::RelocalizerParams{}.top_turns)},
@@ -165,6 +171,8 @@ static int run(int argc, char** argv) {
   cfg.method_settings.seeded.particles_per_hypothesis = static_cast<size_t>(args.integer("seeded-particles-per-hypothesis"));
   cfg.method_settings.seeded.min_particles = static_cast<size_t>(args.integer("seeded-min-particles"));
   cfg.method_settings.seeded.fallback_shrinks.enabled = !args.flag("seeded-uniform-start-fixed");
+  cfg.method_settings.seeded.fallback_shrinks.concentrated_resamplings =
+      static_cast<int>(args.integerInRange("seeded-uniform-start-shrinks-after", 1, kMaxShrinkWait));
   cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integerInRange("top-zones", 0, kMaxZones));
   const auto top_turns = args.integer("top-turns");
   if (top_turns < 1 || top_turns > 4) throw krp::InputError("--top-turns", "must be 1 to 4");

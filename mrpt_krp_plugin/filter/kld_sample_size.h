@@ -27,6 +27,13 @@ struct KldSampleSizeParams {
   /// the places that later scans might favour. Until then the set keeps (or regains) its start's
   /// count.
   ConcentrationThresholds only_once_concentrated;
+  /// ...and only once it has been so at this many resamplings in a row: with a short-range lidar
+  /// one scan can gather a uniform start on a wrong place, which the next scans would spread
+  /// again if the set still had the particles to find the truth [1 or more]. 5: of the lds01
+  /// profile's 200 uniform starts (`seeded-keypoints-only`, office, seeds 1 and 2) that the
+  /// fixed count got right, 1 lost 2 + 1, 3 lost 0 + 1, 5 none; on Willow's six uniform starts
+  /// 5 still halves their CPU (docs/results.md, "A uniform start that shrinks").
+  int concentrated_resamplings = 5;
 };
 
 /// The KLD bound for `occupied_bins` bins (0 for one bin or none: any sample describes it).

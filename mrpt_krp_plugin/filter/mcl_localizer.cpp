@@ -80,9 +80,11 @@ void MclLocalizer::resampleSystematicIfNeeded() {
   // KLD sizing draws up to the start's count and keeps the prefix it needs; a set that has
   // spread out again regains the start's count.
   const size_t draws = kld_resampling_ ? start_particles_ : n;
-  const bool size_by_kld =
+  const bool concentrated =
       kld_resampling_ &&
       isConcentrated(filterSpread(std::get<0>(pf_.getCovarianceAndMean())), kld_resampling_->params.only_once_concentrated);
+  concentrated_resamplings_ = concentrated ? concentrated_resamplings_ + 1 : 0;
+  const bool size_by_kld = concentrated && concentrated_resamplings_ >= kld_resampling_->params.concentrated_resamplings;
   const double step = total / static_cast<double>(draws);
   double u = rng.uniform(0.0, step);
   std::vector<mrpt::math::TPose2D> picked(draws);
@@ -303,6 +305,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     init_->initialize(pf_, filter_.m_options, *map_, *step.observations);
     kld_resampling_ = init_->kldResampling();
     start_particles_ = pf_.size();
+    concentrated_resamplings_ = 0;
     initialized_ = true;
     ++initializations_;
     e.initialized = true;

@@ -151,6 +151,7 @@ class MclLocalizer {
   /// which caps it.
   std::optional<KldResampling> kld_resampling_;
   std::size_t start_particles_ = 0;
+  int concentrated_resamplings_ = 0;  ///< in a row, since this start (KLD sizing waits for them)
   /// Made with the filter when kidnap detection is on, or with a guard that has a fit floor: its
   /// distance field is map preparation, not charged to an update.
   std::unique_ptr<ScanFitScorer> fit_scorer_;

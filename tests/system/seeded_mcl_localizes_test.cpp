@@ -163,6 +163,53 @@ class TwinCloudsInitializer : public ParticleInitializer {
   double shift_m_;
 };
 
+// One cloud at the truth, which asks for KLD sizing only after `wait` concentrated resamplings.
+class OneCloudInitializer : public ParticleInitializer {
+ public:
+  OneCloudInitializer(mrpt::math::TPose2D pose, int wait) : pose_(pose), wait_(wait) {}
+  std::string name() const override { return "one-cloud"; }
+  void initialize(mrpt::slam::CMonteCarloLocalization2D& pf, mrpt::bayes::CParticleFilter::TParticleFilterOptions&,
+                  const mrpt::maps::COccupancyGridMap2D&, const mrpt::obs::CSensoryFrame&) override {
+    Rng rng(9);
+    pf.m_particles.resize(kParticles);
+    for (auto& p : pf.m_particles) {
+      p.d = {rng.normal(pose_.x, 0.1), rng.normal(pose_.y, 0.1), rng.normal(pose_.phi, 0.05)};
+      p.log_w = 0.0;
+    }
+  }
+  std::optional<KldResampling> kldResampling() const override {
+    KldResampling k{{}, SeededInitParams{}.min_particles};
+    k.params.concentrated_resamplings = wait_;
+    return k;
+  }
+  static constexpr size_t kParticles = 20000;
+
+ private:
+  mrpt::math::TPose2D pose_;
+  int wait_;
+};
+
+// A set gathered in one place shrinks only after it has stayed there for the resamplings asked:
+// one scan can gather a uniform start on a wrong place that later scans would spread again.
+TEST(SystemSeededMcl, AConcentratedSetWaitsTheResamplingsAskedBeforeShrinking) {
+  const auto room = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  TrialParams tp;
+  tp.steps = 8;
+  const Trial t = generateTrial(*room, lidarProfileByName("omni_12m"), tp, 2);
+  const auto steps = trialToSteps(t);
+  // The first update that weighs fewer than the start's particles (-1: none did).
+  const auto first_shrunk = [&](int wait) {
+    MclLocalizer loc(room, std::make_shared<OneCloudInitializer>(t.truth[0], wait), MclParams{});
+    for (size_t i = 0; i < steps.size(); ++i)
+      if (loc.update(steps[i]).particles < OneCloudInitializer::kParticles) return static_cast<int>(i);
+    return -1;
+  };
+  const int at_once = first_shrunk(1), after_three = first_shrunk(3);
+  ASSERT_GE(at_once, 1) << "a concentrated cloud should shrink";
+  ASSERT_GE(after_three, 0) << "it should shrink once it has waited";
+  EXPECT_GE(after_three, at_once + 2) << "shrank before its three resamplings in a row";
+}
+
 TEST(SystemSeededMcl, ASetSplitBetweenLookAlikePlacesKeepsItsCount) {
   const auto rooms = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::twinRooms());
   TrialParams tp;
