@@ -109,22 +109,33 @@ TEST(SystemSeededMcl, DetectsAKidnapAndRecoversByReseeding) {
 namespace krp {
 namespace {
 
+TrialParams eightSteps() {
+  TrialParams tp;
+  tp.steps = 8;
+  return tp;
+}
+
+// The shrinking tests' drive: 8 updates in the asymmetric room, 360 deg 12 m lidar, trial seed 2.
+struct RoomTrial {
+  std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> room =
+      std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
+  Trial trial = generateTrial(*room, lidarProfileByName("omni_12m"), eightSteps(), 2);
+  std::vector<RawlogStep> steps = trialToSteps(trial);
+};
+
 // With nothing from the relocalizer the filter starts uniform, over the whole map; once it has
 // converged it should track with a seeded start's few hundred particles, not keep them all.
 TEST(SystemSeededMcl, AUniformStartShrinksOnceItConverges) {
-  const auto room = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
-  TrialParams tp;
-  tp.steps = 8;
-  const Trial t = generateTrial(*room, lidarProfileByName("omni_12m"), tp, 2);
-  const auto steps = trialToSteps(t);
+  const RoomTrial rt;
   const auto run = [&](bool shrink) {
     SeededInitParams sp;
     sp.fallback.particles = 20000;
     sp.fallback_shrinks.enabled = shrink;
     auto init = std::make_shared<SeededInitializer>([](const auto&) { return Ranking{}; }, sp);
-    MclLocalizer loc(room, init, MclParams{});
+    MclLocalizer loc(rt.room, init, MclParams{});
     std::vector<UpdateRecord> u;
-    for (size_t i = 0; i < steps.size(); ++i) u.push_back(makeUpdateRecord(loc.update(steps[i]), t.truth[i], t.distance_m[i]));
+    for (size_t i = 0; i < rt.steps.size(); ++i)
+      u.push_back(makeUpdateRecord(loc.update(rt.steps[i]), rt.trial.truth[i], rt.trial.distance_m[i]));
     EXPECT_TRUE(init->lastSeeding()->fell_back_to_uniform);
     EXPECT_EQ(init->lastSeeding()->particles, 20000u);
     return u;
@@ -138,43 +149,23 @@ TEST(SystemSeededMcl, AUniformStartShrinksOnceItConverges) {
   EXPECT_EQ(fixed.back().particles, 20000u) << "disabled, the count stays fixed";
 }
 
-// A set split between twin rooms, which no scan tells apart, stays split: however peaked each
-// half is, it must keep its start's count, since the half that KLD sizing would starve may be
-// the right one.
-class TwinCloudsInitializer : public ParticleInitializer {
+// Gaussian clouds the test places itself: one at `pose`, and a second `twin_shift_m` east of it
+// when that is not 0 (particles alternate between the two). Asks for KLD sizing after `wait`
+// concentrated resamplings.
+class CloudsInitializer : public ParticleInitializer {
  public:
-  TwinCloudsInitializer(mrpt::math::TPose2D pose, double shift_m) : pose_(pose), shift_m_(shift_m) {}
-  std::string name() const override { return "twin-clouds"; }
+  CloudsInitializer(mrpt::math::TPose2D pose, double twin_shift_m, double std_xy_m, double std_phi_rad, int wait = 1)
+      : pose_(pose), twin_shift_m_(twin_shift_m), std_xy_m_(std_xy_m), std_phi_rad_(std_phi_rad), wait_(wait) {}
+  std::string name() const override { return "clouds"; }
   void initialize(mrpt::slam::CMonteCarloLocalization2D& pf, mrpt::bayes::CParticleFilter::TParticleFilterOptions&,
                   const mrpt::maps::COccupancyGridMap2D&, const mrpt::obs::CSensoryFrame&) override {
     Rng rng(7);
     pf.m_particles.resize(kParticles);
     for (size_t i = 0; i < kParticles; ++i) {
-      const double dx = i % 2 ? shift_m_ : 0.0;
-      pf.m_particles[i].d = {rng.normal(pose_.x + dx, 0.3), rng.normal(pose_.y, 0.3), rng.normal(pose_.phi, 0.1)};
+      const double dx = i % 2 ? twin_shift_m_ : 0.0;
+      pf.m_particles[i].d = {rng.normal(pose_.x + dx, std_xy_m_), rng.normal(pose_.y, std_xy_m_),
+                             rng.normal(pose_.phi, std_phi_rad_)};
       pf.m_particles[i].log_w = 0.0;
-    }
-  }
-  std::optional<KldResampling> kldResampling() const override { return KldResampling{{}, SeededInitParams{}.min_particles}; }
-  static constexpr size_t kParticles = 20000;
-
- private:
-  mrpt::math::TPose2D pose_;
-  double shift_m_;
-};
-
-// One cloud at the truth, which asks for KLD sizing only after `wait` concentrated resamplings.
-class OneCloudInitializer : public ParticleInitializer {
- public:
-  OneCloudInitializer(mrpt::math::TPose2D pose, int wait) : pose_(pose), wait_(wait) {}
-  std::string name() const override { return "one-cloud"; }
-  void initialize(mrpt::slam::CMonteCarloLocalization2D& pf, mrpt::bayes::CParticleFilter::TParticleFilterOptions&,
-                  const mrpt::maps::COccupancyGridMap2D&, const mrpt::obs::CSensoryFrame&) override {
-    Rng rng(9);
-    pf.m_particles.resize(kParticles);
-    for (auto& p : pf.m_particles) {
-      p.d = {rng.normal(pose_.x, 0.1), rng.normal(pose_.y, 0.1), rng.normal(pose_.phi, 0.05)};
-      p.log_w = 0.0;
     }
   }
   std::optional<KldResampling> kldResampling() const override {
@@ -186,22 +177,19 @@ class OneCloudInitializer : public ParticleInitializer {
 
  private:
   mrpt::math::TPose2D pose_;
+  double twin_shift_m_, std_xy_m_, std_phi_rad_;
   int wait_;
 };
 
 // A set gathered in one place shrinks only after it has stayed there for the resamplings asked:
 // one scan can gather a uniform start on a wrong place that later scans would spread again.
 TEST(SystemSeededMcl, AConcentratedSetWaitsTheResamplingsAskedBeforeShrinking) {
-  const auto room = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
-  TrialParams tp;
-  tp.steps = 8;
-  const Trial t = generateTrial(*room, lidarProfileByName("omni_12m"), tp, 2);
-  const auto steps = trialToSteps(t);
+  const RoomTrial rt;
   // The first update that weighs fewer than the start's particles (-1: none did).
   const auto first_shrunk = [&](int wait) {
-    MclLocalizer loc(room, std::make_shared<OneCloudInitializer>(t.truth[0], wait), MclParams{});
-    for (size_t i = 0; i < steps.size(); ++i)
-      if (loc.update(steps[i]).particles < OneCloudInitializer::kParticles) return static_cast<int>(i);
+    MclLocalizer loc(rt.room, std::make_shared<CloudsInitializer>(rt.trial.truth[0], 0.0, 0.1, 0.05, wait), MclParams{});
+    for (size_t i = 0; i < rt.steps.size(); ++i)
+      if (loc.update(rt.steps[i]).particles < CloudsInitializer::kParticles) return static_cast<int>(i);
     return -1;
   };
   const int at_once = first_shrunk(1), after_three = first_shrunk(3);
@@ -210,6 +198,9 @@ TEST(SystemSeededMcl, AConcentratedSetWaitsTheResamplingsAskedBeforeShrinking) {
   EXPECT_GE(after_three, at_once + 2) << "shrank before its three resamplings in a row";
 }
 
+// A set split between twin rooms, which no scan tells apart, stays split: however peaked each
+// half is, it must keep its start's count, since the half that KLD sizing would starve may be
+// the right one.
 TEST(SystemSeededMcl, ASetSplitBetweenLookAlikePlacesKeepsItsCount) {
   const auto rooms = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::twinRooms());
   TrialParams tp;
@@ -219,13 +210,13 @@ TEST(SystemSeededMcl, ASetSplitBetweenLookAlikePlacesKeepsItsCount) {
   for (uint64_t seed = 1; seed < 50 && (t.truth.empty() || t.truth[0].x > test::twinRoomsShiftM()); ++seed)
     t = generateTrial(*rooms, lidarProfileByName("omni_12m"), tp, seed);
   ASSERT_LT(t.truth[0].x, test::twinRoomsShiftM());
-  MclLocalizer loc(rooms, std::make_shared<TwinCloudsInitializer>(t.truth[0], test::twinRoomsShiftM()), MclParams{});
+  MclLocalizer loc(rooms, std::make_shared<CloudsInitializer>(t.truth[0], test::twinRoomsShiftM(), 0.3, 0.1), MclParams{});
   const auto steps = trialToSteps(t);
   for (size_t i = 0; i < steps.size(); ++i) {
     const auto e = loc.update(steps[i]);
     ASSERT_FALSE(isConcentrated(filterSpread(e.cov), KldSampleSizeParams{}.only_once_concentrated))
         << "update " << i << ": the twin rooms should keep the set split";
-    EXPECT_EQ(e.particles, TwinCloudsInitializer::kParticles) << "update " << i;
+    EXPECT_EQ(e.particles, CloudsInitializer::kParticles) << "update " << i;
   }
 }
 
