@@ -193,9 +193,7 @@ double CorrelativeMatcher::scoreAt(const mrpt::obs::CObservation2DRangeScan& sca
 
 std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservation2DRangeScan& scan,
                                                      const MatchRequest& request) const {
-  nodes_scored_ = 0;
-  nodes_stopped_early_ = 0;
-  cut_short_ = false;
+  countAfresh();
   const int solutions = request.solutions.value_or(params_.solutions);
   std::vector<MatchSolution> out;
   if (request.leaf_penalty) {
@@ -203,14 +201,9 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
     MatchRequest one = request;
     one.solutions = 1;
     for (int sol = 0; sol < solutions; ++sol) {
-      // Each startSearch() counts afresh: this match() counts all of its searches.
-      const long long nodes = nodes_scored_, stopped_early = nodes_stopped_early_;
-      const bool cut_short = cut_short_;
-      const auto search = startSearch(scan, one);
+      // setUpSearch, not startSearch: this match() counts all of its searches.
+      const auto search = setUpSearch(scan, one);
       resume(*search, 0);
-      nodes_scored_ += nodes;
-      nodes_stopped_early_ += stopped_early;
-      cut_short_ = cut_short || search->cutShort();
       if (!search->solution()) break;
       out.push_back(*search->solution());
       one.excluded.emplace_back(out.back().pose.x, out.back().pose.y);
@@ -355,15 +348,24 @@ std::vector<CorrelativeMatcher::Rotation> CorrelativeMatcher::rotationsOf(
   return rotations;
 }
 
+void CorrelativeMatcher::countAfresh() const {
+  nodes_scored_ = 0;
+  nodes_stopped_early_ = 0;
+  cut_short_ = false;
+}
+
 std::unique_ptr<CorrelativeMatcher::Search> CorrelativeMatcher::startSearch(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                                          const MatchRequest& request) const {
+  // The last-search counters follow this search from here, not the match() before it.
+  countAfresh();
+  return setUpSearch(scan, request);
+}
+
+std::unique_ptr<CorrelativeMatcher::Search> CorrelativeMatcher::setUpSearch(const mrpt::obs::CObservation2DRangeScan& scan,
                                                                           const MatchRequest& request) const {
   if (!request.leaf_penalty) throw std::invalid_argument("CorrelativeMatcher::startSearch: the request has no leaf_penalty");
   if (request.solutions.value_or(params_.solutions) != 1)
     throw std::invalid_argument("CorrelativeMatcher::startSearch: one solution per search");
-  // The last-search counters follow this search from here, not the match() before it.
-  nodes_scored_ = 0;
-  nodes_stopped_early_ = 0;
-  cut_short_ = false;
   auto search = std::unique_ptr<Search>(new Search());
   search->request_ = request;
   search->region_sum_ = regionSum(request.region);
@@ -415,7 +417,7 @@ bool CorrelativeMatcher::resume(Search& s, long long max_nodes) const {
     if (budget > 0 && scored() >= budget) {
       // Out of budget: the best place charged so far is a true answer, maybe not the best.
       s.cut_short_ = true;
-      cut_short_ = true;  // lastSearchCutShort() follows the search last begun
+      cut_short_ = true;  // lastSearchCutShort() follows the search last begun, or match()
       return finish(s.best_ ? std::optional<MatchSolution>(solution(*s.best_)) : std::nullopt);
     }
     if (slice_end > 0 && scored() >= slice_end) {

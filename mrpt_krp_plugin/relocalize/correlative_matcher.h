@@ -121,6 +121,11 @@ class CorrelativeMatcher {
   const CorrelativeMatcherParams& params() const { return params_; }
 
  private:
+  /// Starts the last-search counters (lastNodesScored and the rest) at zero.
+  void countAfresh() const;
+  /// startSearch() without starting the counters afresh, so match() counts all its searches.
+  std::unique_ptr<Search> setUpSearch(const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request) const;
+
   struct Rotation {
     double phi;
     std::vector<cv::Point> offsets;  ///< each return's cell offset from the robot's cell
