@@ -27,7 +27,8 @@ struct SeededInitParams {
   /// as a histogram of the prior needs, so a wide or many-headed prior gets more particles than
   /// one tight pose; min_particles and max_particles still bound the total. Off by default until
   /// it has been measured against the fixed count on every report (the `seeded-spread-count`
-  /// method of krp-bench runs it beside `seeded`).
+  /// method of krp-bench runs it beside `seeded`). Only its epsilon, z and bins apply here: the
+  /// concentration gate (only_once_concentrated, concentrated_resamplings) is the resampling's.
   KldSampleSizeParams count_from_spread{false};
   /// Share of the particles spread uniformly over the free space, so that a wrong hypothesis
   /// stays recoverable. Never zero by default; 0 gives the `seeded-no-uniform` method [0..1).
