@@ -34,6 +34,13 @@ struct KldSampleSizeParams {
   /// fixed count got right, 1 lost 2 + 1, 3 lost 0 + 1, 5 none; on Willow's six uniform starts
   /// 5 still halves their CPU (docs/results.md, "A uniform start that shrinks").
   int concentrated_resamplings = 5;
+
+  /// These defaults, switched off.
+  static KldSampleSizeParams off() {
+    KldSampleSizeParams p;
+    p.enabled = false;
+    return p;
+  }
 };
 
 /// The KLD bound for `occupied_bins` bins (0 for one bin or none: any sample describes it).

@@ -29,7 +29,7 @@ struct SeededInitParams {
   /// it has been measured against the fixed count on every report (the `seeded-spread-count`
   /// method of krp-bench runs it beside `seeded`). Only its epsilon, z and bins apply here: the
   /// concentration gate (only_once_concentrated, concentrated_resamplings) is the resampling's.
-  KldSampleSizeParams count_from_spread{false};
+  KldSampleSizeParams count_from_spread = KldSampleSizeParams::off();
   /// Share of the particles spread uniformly over the free space, so that a wrong hypothesis
   /// stays recoverable. Never zero by default; 0 gives the `seeded-no-uniform` method [0..1).
   double uniform_fraction = 0.05;
