@@ -57,7 +57,7 @@ def main():
         "other. When the relocalizer has no hypothesis the filter starts as uniform MCL over the map's free",
         "space; with `fixed` it keeps that count to the end, with `kld` it sizes its set by KLD sampling",
         "(amcl's epsilon 0.01, z 0.99, 0.5 m / 10 deg bins) at each resampling once the weighted set has",
-        "been concentrated (0.5 m, 10 deg) at 5 resamplings in a row (KldSampleSizeParams::",
+        "been concentrated (0.5 m, 10 deg) at 5 resamplings in a row (KldResamplingParams::",
         "concentrated_resamplings), never below the seeded floor (500) nor above the start's count.",
         "Trials the relocalizer seeded run the same code in both settings.",
         "",

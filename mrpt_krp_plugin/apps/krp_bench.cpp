@@ -65,10 +65,10 @@ static int run(int argc, char** argv) {
                  "floor of a uniform start that shrinks)", std::to_string(krp::SeededInitParams{}.min_particles)},
                 {"seeded-uniform-start-fixed", "", "seeded methods: a filter that started uniform (no hypothesis) "
                  "keeps its count to the end instead of shrinking by KLD sampling once converged "
-                 "(SeededInitParams::fallback_shrinks off; the seeded filter before it)", ""},
+                 "(SeededInitParams::fallback_shrinks unset; the seeded filter before it)", ""},
                 {"seeded-uniform-start-shrinks-after", "N", "seeded methods: a uniform start shrinks only once its "
-                 "set has been concentrated at N resamplings in a row (KldSampleSizeParams::concentrated_resamplings)",
-                 std::to_string(krp::KldSampleSizeParams{}.concentrated_resamplings)},
+                 "set has been concentrated at N resamplings in a row (KldResamplingParams::concentrated_resamplings)",
+                 std::to_string(krp::KldResamplingParams{}.concentrated_resamplings)},
                 {"top-zones", "N", "seeded: zones whose keypoints are aligned", "2"},
                 {"top-turns", "N", "seeded, wall-aligned models: submap turns the keypoint model runs on (the "
                  "classifier's surest)", std::to_string(krp::RelocalizerParams{}.top_turns)},
@@ -170,9 +170,11 @@ static int run(int argc, char** argv) {
     if (args.integer(flag) < 1) throw krp::InputError(std::string("--") + flag, "must be 1 or more");
   cfg.method_settings.seeded.particles_per_hypothesis = static_cast<size_t>(args.integer("seeded-particles-per-hypothesis"));
   cfg.method_settings.seeded.min_particles = static_cast<size_t>(args.integer("seeded-min-particles"));
-  cfg.method_settings.seeded.fallback_shrinks.enabled = !args.flag("seeded-uniform-start-fixed");
-  cfg.method_settings.seeded.fallback_shrinks.concentrated_resamplings =
-      static_cast<int>(args.integerInRange("seeded-uniform-start-shrinks-after", 1, kMaxShrinkWait));
+  const auto shrink_wait = static_cast<int>(args.integerInRange("seeded-uniform-start-shrinks-after", 1, kMaxShrinkWait));
+  if (args.flag("seeded-uniform-start-fixed"))
+    cfg.method_settings.seeded.fallback_shrinks.reset();
+  else
+    cfg.method_settings.seeded.fallback_shrinks->concentrated_resamplings = shrink_wait;
   cfg.method_settings.relocalizer.top_zones = static_cast<int>(args.integerInRange("top-zones", 0, kMaxZones));
   const auto top_turns = args.integer("top-turns");
   if (top_turns < 1 || top_turns > 4) throw krp::InputError("--top-turns", "must be 1 to 4");

@@ -260,7 +260,7 @@ static int run(int argc, char** argv) {
                 {"seeded-uniform-fraction", "F", "seeded: share of particles spread uniformly", "0.05"},
                 {"seeded-uniform-start-shrinks", "0|1", "seeded methods: 1 lets a filter that started uniform (no "
                  "hypothesis) shrink by KLD sampling once converged, down to the seeded floor; 0 keeps its count",
-                 krp::SeededInitParams{}.fallback_shrinks.enabled ? "1" : "0"},
+                 krp::SeededInitParams{}.fallback_shrinks ? "1" : "0"},
                 {"ground-truth", "FILE", "ground truth 'step x y phi' (optional)", ""},
                 {"out-dir", "DIR", "output folder", "out/localize"},
                 {"seed", "N", "filter seed", "1"},
@@ -295,7 +295,7 @@ static int run(int argc, char** argv) {
   ms.seeded.uniform_fraction = toNumber(s, "seeded_uniform_fraction");
   const auto shrinks = toNumber(s, "seeded_uniform_start_shrinks");
   if (shrinks != 0 && shrinks != 1) throw krp::InputError("--seeded-uniform-start-shrinks", "must be 0 or 1");
-  ms.seeded.fallback_shrinks.enabled = shrinks == 1;
+  if (shrinks == 0) ms.seeded.fallback_shrinks.reset();
   ms.guard.recheck_every_updates = static_cast<int>(toWholeNumber(s, "guard_recheck_every", 0, krp::LookAlikeGuardParams::kMaxRecheckEveryUpdates));
   ms.guard.max_search_nodes = toWholeNumber(s, "guard_max_search_nodes", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
   ms.guard.max_nodes_per_update = toWholeNumber(s, "guard_nodes_per_update", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);

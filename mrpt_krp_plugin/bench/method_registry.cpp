@@ -76,7 +76,7 @@ std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, co
     const auto relocalizer = found == resources.relocalizers.end() ? nullptr : found->second;
     if (!relocalizer) throw InputError("method '" + name + "'", "needs trained models (a models folder with manifest.json)");
     if (name == "seeded-no-uniform") seeded.uniform_fraction = 0.0;
-    if (name == kSpreadCount) seeded.count_from_spread.enabled = true;
+    if (name == kSpreadCount) seeded.count_from_spread = KldSampleSizeParams{};
     return std::make_shared<SeededInitializer>(
         [relocalizer](const mrpt::obs::CObservation2DRangeScan& scan) { return relocalizer->relocalize(scan).ranking; },
         seeded, name);

@@ -15,13 +15,16 @@ namespace krp {
 /// given how many histogram bins the set occupies. A converged filter occupies a few bins and
 /// needs a few hundred particles; one spread over a building needs its whole cap.
 struct KldSampleSizeParams {
-  /// Off: the filter keeps its start's particle count to the end, as MRPT's fixed-size MCL does.
-  bool enabled = true;
   double epsilon = 0.01;  ///< amcl `kld_err`
   /// amcl `kld_z`, used as the normal quantile itself, as amcl does (see AmclKldParams).
   double z = 0.99;
   double bin_xy_m = 0.5;      ///< amcl's histogram bins [m]
   double bin_phi_deg = 10.0;  ///< [deg]
+};
+
+/// When a filter's resampling sizes its set by KLD sampling (a filter that started uniform).
+struct KldResamplingParams {
+  KldSampleSizeParams size;
   /// Sized by KLD only once the weighted set is this concentrated: from a uniform start the first
   /// scans' weights are so peaked that KLD would cut a still-undecided set to its floor, dropping
   /// the places that later scans might favour. Until then the set keeps (or regains) its start's
@@ -34,13 +37,6 @@ struct KldSampleSizeParams {
   /// fixed count got right, 1 lost 2 + 1, 3 lost 0 + 1, 5 none; on Willow's six uniform starts
   /// 5 still halves their CPU (docs/results.md, "A uniform start that shrinks").
   int concentrated_resamplings = 5;
-
-  /// These defaults, switched off.
-  static KldSampleSizeParams off() {
-    KldSampleSizeParams p;
-    p.enabled = false;
-    return p;
-  }
 };
 
 /// The KLD bound for `occupied_bins` bins (0 for one bin or none: any sample describes it).
@@ -56,7 +52,7 @@ std::size_t kldSampleCount(const std::vector<mrpt::math::TPose2D>& draws, const 
 /// `min_particles` (the seeded start's own floor, so that a filter that shrank has as many
 /// particles as one the relocalizer seeded).
 struct KldResampling {
-  KldSampleSizeParams params;
+  KldResamplingParams params;
   std::size_t min_particles = 0;
 };
 

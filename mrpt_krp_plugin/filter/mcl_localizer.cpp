@@ -97,7 +97,7 @@ void MclLocalizer::resampleSystematicIfNeeded() {
   if (size_by_kld) {
     // Systematic draws come in the order of the old set: shuffled, any prefix is a fair sample.
     rng.shuffle(picked);
-    kept = kldSampleCount(picked, kld_resampling_->params, kld_resampling_->min_particles);
+    kept = kldSampleCount(picked, kld_resampling_->params.size, kld_resampling_->min_particles);
   }
   pf_.m_particles.resize(kept);
   for (size_t i = 0; i < kept; ++i) {

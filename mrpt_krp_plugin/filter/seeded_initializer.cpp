@@ -71,8 +71,8 @@ SeededInitializer::SeededInitializer(HypothesisSource source, SeededInitParams p
 }
 
 std::optional<KldResampling> SeededInitializer::kldResampling() const {
-  if (last_ && last_->fell_back_to_uniform && params_.fallback_shrinks.enabled)
-    return KldResampling{params_.fallback_shrinks, params_.min_particles};
+  if (last_ && last_->fell_back_to_uniform && params_.fallback_shrinks)
+    return KldResampling{*params_.fallback_shrinks, params_.min_particles};
   return std::nullopt;
 }
 
@@ -119,14 +119,14 @@ void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
   Rng rng(params_.seed);
   std::vector<mrpt::math::TPose2D> seeded;
   std::size_t total = 0;
-  if (params_.count_from_spread.enabled) {
+  if (params_.count_from_spread) {
     // Draws up to the cap, in random order, then keeps the prefix that KLD sampling asks for.
     // Its floor is min_particles' seeded part: the bound for the one bin a first draw occupies is
     // zero, so without a floor the rule would stop there, as KLD sampling never starts that small.
     const std::size_t cap = params_.max_particles - uniform_count(params_.max_particles);
     seeded = mixtureDraws(clouds, cap, rng);
     const std::size_t floor = params_.min_particles - uniform_count(params_.min_particles);
-    total = total_for(kldSampleCount(seeded, params_.count_from_spread, floor));
+    total = total_for(kldSampleCount(seeded, *params_.count_from_spread, floor));
     seeded.resize(std::min(cap, total - uniform_count(total)));
   } else {
     total = total_for(params_.particles_per_hypothesis * hyps.size());

@@ -22,14 +22,13 @@ struct SeededInitParams {
   std::size_t particles_per_hypothesis = 250;
   std::size_t min_particles = 500;             ///< total, uniform share included
   std::size_t max_particles = 5000;            ///< total cap
-  /// Enabled: instead of particles_per_hypothesis, the count comes from the hypotheses' spread,
-  /// by KLD sampling of the mixture itself (Fox 2003, with these bins and bounds): as many draws
-  /// as a histogram of the prior needs, so a wide or many-headed prior gets more particles than
-  /// one tight pose; min_particles and max_particles still bound the total. Off by default until
-  /// it has been measured against the fixed count on every report (the `seeded-spread-count`
-  /// method of krp-bench runs it beside `seeded`). Only its epsilon, z and bins apply here: the
-  /// concentration gate (only_once_concentrated, concentrated_resamplings) is the resampling's.
-  KldSampleSizeParams count_from_spread = KldSampleSizeParams::off();
+  /// Set: instead of particles_per_hypothesis, the count comes from the hypotheses' spread, by
+  /// KLD sampling of the mixture itself (Fox 2003, with these bins and bounds): as many draws as
+  /// a histogram of the prior needs, so a wide or many-headed prior gets more particles than one
+  /// tight pose; min_particles and max_particles still bound the total. Unset by default: measured
+  /// against the fixed count (the `seeded-spread-count` method of krp-bench, reports/spread_count),
+  /// it bought nothing there.
+  std::optional<KldSampleSizeParams> count_from_spread;
   /// Share of the particles spread uniformly over the free space, so that a wrong hypothesis
   /// stays recoverable. Never zero by default; 0 gives the `seeded-no-uniform` method [0..1).
   double uniform_fraction = 0.05;
@@ -42,9 +41,9 @@ struct SeededInitParams {
   UniformInitParams fallback;
   /// ...and then sizes its set by KLD sampling at each resampling, so that once it converges it
   /// tracks with a seeded start's few hundred particles instead of the tens of thousands that
-  /// cover the map (disabled: the uniform count stays to the end). A seeded start is already
+  /// cover the map (unset: the uniform count stays to the end). A seeded start is already
   /// concentrated and capped at max_particles; its count stays fixed. Never below min_particles.
-  KldSampleSizeParams fallback_shrinks;
+  std::optional<KldResamplingParams> fallback_shrinks = KldResamplingParams{};
   double free_cell_min_freeness = 0.7;  ///< a map cell with p(free) above this is free [0..1]
   uint64_t seed = 1;
 };

@@ -173,7 +173,7 @@ SeededInitParams NodeParams::seeded() const {
   s.max_particles = static_cast<std::size_t>(max_particles);
   s.min_particles = std::min(s.min_particles, s.max_particles);
   s.uniform_fraction = uniform_fraction;
-  s.fallback_shrinks.enabled = shrink_uniform_start;
+  if (!shrink_uniform_start) s.fallback_shrinks.reset();
   return s;
 }
 

@@ -58,7 +58,7 @@ struct NodeParams {
   /// `track`: a filter that started uniform (the relocalizer had nothing credible) sizes its set
   /// by KLD sampling once it has converged, down to a seeded start's floor, instead of tracking
   /// with the tens of thousands of particles that cover the map (SeededInitParams::fallback_shrinks)
-  bool shrink_uniform_start = SeededInitParams{}.fallback_shrinks.enabled;
+  bool shrink_uniform_start = SeededInitParams{}.fallback_shrinks.has_value();
   bool look_alike_guard = true;        ///< `track`: check the converged filter for a look-alike place (LookAlikeGuard)
   /// `track`: a look-alike scoring within this of the tracked pose makes it ambiguous [0..1]
   double look_alike_ambiguity_margin = LookAlikeGuardParams{}.ambiguity_margin;

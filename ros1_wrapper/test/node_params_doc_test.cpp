@@ -117,11 +117,11 @@ TEST(RosNodeParams, TheTurnAndZoneSearchSettingsReachTheLearnedRelocalizer) {
 // (which max_particles may lower).
 TEST(RosNodeParams, TheUniformStartShrinksToTheNodesSeededFloor) {
   NodeParams p;
-  EXPECT_TRUE(p.seeded().fallback_shrinks.enabled);
+  EXPECT_TRUE(p.seeded().fallback_shrinks.has_value());
   p.max_particles = 300;
   EXPECT_EQ(p.seeded().min_particles, 300u) << "the floor a uniform start shrinks to";
   p.shrink_uniform_start = false;
-  EXPECT_FALSE(p.seeded().fallback_shrinks.enabled);
+  EXPECT_FALSE(p.seeded().fallback_shrinks.has_value());
 }
 
 }  // namespace

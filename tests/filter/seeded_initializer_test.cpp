@@ -94,7 +94,7 @@ PoseHypothesis withStd(PoseHypothesis h, double std_xy_m, double std_yaw_rad) {
 TEST(SeededInitializer, CountFromSpreadGrowsWithTheHypothesesSpread) {
   const auto room = test::asymmetricRoom();
   SeededInitParams p;
-  p.count_from_spread.enabled = true;
+  p.count_from_spread = KldSampleSizeParams{};
   p.min_particles = 100;
   const auto count = [&](std::vector<PoseHypothesis> hyps) {
     Ranking r;
@@ -115,8 +115,8 @@ TEST(SeededInitializer, CountFromSpreadGrowsWithTheHypothesesSpread) {
   EXPECT_LT(one_tight, 2000u);
   EXPECT_GT(two_tight, one_tight * 3 / 2) << "a second place doubles the occupied bins";
   EXPECT_EQ(one_wide, p.max_particles) << "a 0.8 m, 17 deg cloud needs more than the cap";
-  // Off (the default), the count is the fixed rule's whatever the spread: ceil(250 / 0.95).
-  p.count_from_spread.enabled = false;
+  // Unset (the default), the count is the fixed rule's whatever the spread: ceil(250 / 0.95).
+  p.count_from_spread.reset();
   EXPECT_EQ(count({withStd(hypothesis(5.5, 2.0, 1.0), 0.8, 0.3)}), 264u);
 }
 
@@ -144,7 +144,7 @@ TEST(SeededInitializer, AsksForKldSizingOnlyAfterAUniformFallback) {
   init.initialize(pf, o, room, frameWithScan());
   EXPECT_FALSE(init.kldResampling().has_value()) << "a re-seed after a kidnap is seeded again";
 
-  p.fallback_shrinks.enabled = false;
+  p.fallback_shrinks.reset();
   SeededInitializer fixed([&](const auto&) { return none; }, p);
   fixed.initialize(pf, o, room, frameWithScan());
   EXPECT_FALSE(fixed.kldResampling().has_value());

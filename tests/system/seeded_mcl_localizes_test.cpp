@@ -130,7 +130,7 @@ TEST(SystemSeededMcl, AUniformStartShrinksOnceItConverges) {
   const auto run = [&](bool shrink) {
     SeededInitParams sp;
     sp.fallback.particles = 20000;
-    sp.fallback_shrinks.enabled = shrink;
+    if (!shrink) sp.fallback_shrinks.reset();
     auto init = std::make_shared<SeededInitializer>([](const auto&) { return Ranking{}; }, sp);
     MclLocalizer loc(rt.room, init, MclParams{});
     std::vector<UpdateRecord> u;
@@ -214,7 +214,7 @@ TEST(SystemSeededMcl, ASetSplitBetweenLookAlikePlacesKeepsItsCount) {
   const auto steps = trialToSteps(t);
   for (size_t i = 0; i < steps.size(); ++i) {
     const auto e = loc.update(steps[i]);
-    ASSERT_FALSE(isConcentrated(filterSpread(e.cov), KldSampleSizeParams{}.only_once_concentrated))
+    ASSERT_FALSE(isConcentrated(filterSpread(e.cov), KldResamplingParams{}.only_once_concentrated))
         << "update " << i << ": the twin rooms should keep the set split";
     EXPECT_EQ(e.particles, CloudsInitializer::kParticles) << "update " << i;
   }
