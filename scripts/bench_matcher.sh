@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates reports/matcher_speed (issue 4): the correlative matcher's bounds that stop reading
 # returns once a node cannot win, against bounds that read every return, side by side on the same
-# simulated first scans (krp-bench-matcher; both must answer alike). Worlds office_two_zone,
+# simulated first scans (krp-bench-matcher; both must answer alike); then every heading against
+# the wall-heading windows (MatchRequest::wall_heading_window_deg, 5 deg), on the same scans. Worlds office_two_zone,
 # warehouse and large_floor with their default lidars, and, when ../shared/data holds it, the map
 # of the Freiburg 101 log (its odd scans, as scripts/check_freiburg.sh builds it) with the log's
 # SICK LMS profile (third-party data: only the numbers go into the report). 20 scans each, seed 1

@@ -94,6 +94,12 @@ static int run(int argc, char** argv) {
                 {"guard-max-search-nodes", "N", "methods with the look-alike guard: nodes one look-alike search charged "
                  "for see-through may score before it answers with the best place charged so far (0 = no limit)",
                  std::to_string(krp::LookAlikeGuardParams{}.max_search_nodes)},
+                {"wall-heading-window", "DEG", "seeded methods: the relocalizer's zone search and cross-check try only "
+                 "headings within DEG of the four that line the scan's walls up with the map's, when both have a "
+                 "clear wall direction (0 = every heading)",
+                 krp::formatNumber(krp::RelocalizerParams{}.wall_heading_window_deg)},
+                {"guard-wall-heading-window", "DEG", "methods with the look-alike guard: the same for its search",
+                 krp::formatNumber(krp::LookAlikeGuardParams{}.wall_heading_window_deg)},
                 {"guard-nodes-per-update", "N", "methods with the look-alike guard: nodes of look-alike search one "
                  "filter update may score; a search charged for see-through that needs more pauses and goes on at the "
                  "next updates, the pose reading unverified meanwhile (0 = every search runs to its end at once)",
@@ -211,6 +217,11 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.max_nodes_per_update =
       args.integerInRange("guard-nodes-per-update", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
   cfg.method_settings.guard.unverified_is_unsettled = !args.flag("guard-unverified-is-settled");
+  for (const char* flag : {"wall-heading-window", "guard-wall-heading-window"})
+    if (!krp::MatchRequest::validWallHeadingWindow(args.number(flag)))
+      throw krp::InputError(std::string("--") + flag, "must be 0 (every heading) to 45");
+  cfg.method_settings.relocalizer.wall_heading_window_deg = args.number("wall-heading-window");
+  cfg.method_settings.guard.wall_heading_window_deg = args.number("guard-wall-heading-window");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,
                                   cfg.method_settings.matcher);
   const std::string calibration = args.get("calibration"), fit_calibration = args.get("fit-calibration");

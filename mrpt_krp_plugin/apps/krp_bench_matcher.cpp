@@ -9,6 +9,7 @@
 #include "cli_args.h"
 #include "mrpt_krp_plugin/bench/matcher_speed.h"
 #include "mrpt_krp_plugin/bench/method_registry.h"
+#include "mrpt_krp_plugin/bench/report_format.h"
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/progress_bar.h"
@@ -26,7 +27,8 @@ static int run(int argc, char** argv) {
                "search (global matcher, zone search) and the look-alike check (the filter's guard, the relocalizer's "
                "cross-check), each with node bounds that stop reading returns once the node cannot win and with "
                "bounds that read every return, side by side on the same scan. Both must give the same answers and "
-               "node counts (exit code 1 otherwise). Writes REPORT.md.",
+               "node counts (exit code 1 otherwise). Then, bounds stopping early, the same searches over every heading "
+               "and over the headings that line the scan's walls up with the map's. Writes REPORT.md.",
                {{"world", "NAME", "world name under --world-dir, or a *.world.yaml path (its map, lidar, clutter)",
                  "warehouse"},
                 {"world-dir", "DIR", "folder of the worlds", "sim_worlds"},
@@ -35,12 +37,15 @@ static int run(int argc, char** argv) {
                  "or omni_12m with --map)", ""},
                 {"scans", "N", "scans (one simulated trial each)", std::to_string(defaults.scans)},
                 {"seed", "N", "trial i uses seed + i", std::to_string(defaults.seed)},
+                {"wall-heading-window", "DEG", "the wall-heading comparison's windows (above 0, at most 45)",
+                 krp::formatNumber(defaults.wall_heading_window_deg)},
                 {"out", "DIR", "report folder", "out/bench_matcher"}});
   if (!args.parse(argc, argv)) return 0;
   krp::MatcherSpeedParams params;
   params.scans = static_cast<int>(args.integer("scans"));
   if (params.scans < 1) throw krp::InputError("--scans", "must be at least 1");
   params.seed = args.seed("seed");
+  params.wall_heading_window_deg = args.number("wall-heading-window");
   const krp::MethodSettings settings;  // the matcher and guard as every method runs them
   params.matcher = settings.relocalizer.matcher;
   params.guard = settings.guard;
@@ -75,10 +80,18 @@ static int run(int argc, char** argv) {
      << "guard and the relocalizer's cross-check run it (best-first, a bar just under the pose's own score, "
      << "see-through returns charged). *Scans answered differently* counts scans whose answers, scores or node "
      << "counts differ between the two: it must be 0.\n\n"
-     << krp::matcherSpeedMarkdown(rows);
+     << krp::matcherSpeedMarkdown(rows.stop_early) << "\n## Headings from the walls\n\n"
+     << "The same scans, bounds stopping early in both: every heading of the turn against only those within "
+     << krp::formatNumber(params.wall_heading_window_deg) << " deg of the four that line the scan's walls up with the "
+     << "map's (`MatchRequest::wall_heading_window_deg`; every heading still when the map's or the scan's wall "
+     << "direction holds less than " << krp::formatNumber(params.matcher.min_wall_support) << " of its wall length). "
+     << "Taking turns at going first. An answer that differs has another place, heading or score (the "
+     << "whole-map search gives two solutions, the look-alike check one): a tie broken in another order, or a place "
+     << "at a heading outside the windows.\n\n"
+     << krp::wallHeadingSpeedMarkdown(rows.wall_headings);
   krp::writeFileAtomically(out + "/REPORT.md", md.str());
   std::cout << md.str() << "\nReport: " << out << "/REPORT.md\n";
-  for (const auto& r : rows)
+  for (const auto& r : rows.stop_early)
     if (r.differing > 0) {
       std::cerr << "krp-bench-matcher: the " << r.search << " search answered " << r.differing
                 << " scan(s) differently with bounds that stop early\n";

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/bench/matcher_speed.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include "mrpt_krp_plugin/bench/report_format.h"
+#include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/statistics.h"
 #include "mrpt_krp_plugin/common/thread_cpu_time.h"
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
@@ -23,9 +26,16 @@ struct Answer {
   long long stopped_early = 0;
   double cpu_s = 0.0;
 
-  bool sameSearchAs(const Answer& o) const {
-    if (nodes != o.nodes || solutions.size() != o.solutions.size()) return false;
-    for (size_t i = 0; i < solutions.size(); ++i) {
+  bool sameSearchAs(const Answer& o) const { return nodes == o.nodes && sameAnswerAs(o); }
+  bool sameAnswerAs(const Answer& o) const {
+    return solutions.size() == o.solutions.size() && sameSolutions(o, solutions.size());
+  }
+  /// The best solution (or the lack of one) is the same.
+  bool sameBestAs(const Answer& o) const {
+    return solutions.empty() == o.solutions.empty() && sameSolutions(o, std::min<size_t>(1, solutions.size()));
+  }
+  bool sameSolutions(const Answer& o, size_t count) const {
+    for (size_t i = 0; i < count; ++i) {
       const auto &a = solutions[i], &b = o.solutions[i];
       if (a.score != b.score || a.pose.x != b.pose.x || a.pose.y != b.pose.y || a.pose.phi != b.pose.phi) return false;
     }
@@ -33,23 +43,32 @@ struct Answer {
   }
 };
 
-/// One setting of stop_bound_early: its matcher and the guard searching with it.
+/// One setting of stop_bound_early and of the wall-heading window: its matcher and the guard
+/// searching with it.
 struct Searcher {
   std::shared_ptr<const CorrelativeMatcher> matcher;
   LookAlikeGuard guard;
+  MatchRequest whole_map;  ///< the defaults, with the setting's window
 
   Searcher(const mrpt::maps::COccupancyGridMap2D& map, CorrelativeMatcherParams params, bool stop_early,
-           const LookAlikeGuardParams& guard_params)
-      : matcher(std::make_shared<CorrelativeMatcher>(map, withStopping(params, stop_early))), guard(matcher, guard_params) {}
+           LookAlikeGuardParams guard_params, double wall_heading_window_deg)
+      : matcher(std::make_shared<CorrelativeMatcher>(map, withStopping(params, stop_early))),
+        guard(matcher, withWindow(guard_params, wall_heading_window_deg)) {
+    whole_map.wall_heading_window_deg = wall_heading_window_deg;
+  }
 
   static CorrelativeMatcherParams withStopping(CorrelativeMatcherParams p, bool stop_early) {
     p.stop_bound_early = stop_early;
     return p;
   }
+  static LookAlikeGuardParams withWindow(LookAlikeGuardParams p, double window_deg) {
+    p.wall_heading_window_deg = window_deg;
+    return p;
+  }
   Answer wholeMap(const mrpt::obs::CObservation2DRangeScan& scan) const {
     Answer a;
     const double t0 = threadCpuSeconds();
-    a.solutions = matcher->match(scan);
+    a.solutions = matcher->match(scan, whole_map);
     a.cpu_s = threadCpuSeconds() - t0;
     return counted(a);
   }
@@ -71,75 +90,95 @@ struct Searcher {
 
 /// Per-scan answers of both settings for one kind of search.
 struct Tally {
-  std::vector<double> all_ms, stopping_ms, ratio, nodes;
-  double all_s = 0.0, stopping_s = 0.0;
+  /// The two settings must search alike (same nodes), not only answer alike.
+  bool same_nodes = true;
+  std::vector<double> baseline_ms, variant_ms, ratio, nodes, baseline_nodes;
+  double baseline_s = 0.0, variant_s = 0.0;
   long long nodes_total = 0, stopped_total = 0;
-  int differing = 0;
+  int differing = 0, best_differing = 0;
 
-  void add(const Answer& all, const Answer& stopping) {
-    all_ms.push_back(all.cpu_s * kMsPerS);
-    stopping_ms.push_back(stopping.cpu_s * kMsPerS);
-    if (stopping.cpu_s > 0.0) ratio.push_back(all.cpu_s / stopping.cpu_s);
-    nodes.push_back(static_cast<double>(stopping.nodes));
-    all_s += all.cpu_s;
-    stopping_s += stopping.cpu_s;
-    nodes_total += stopping.nodes;
-    stopped_total += stopping.stopped_early;
-    if (!all.sameSearchAs(stopping)) ++differing;
+  void add(const Answer& baseline, const Answer& variant) {
+    baseline_ms.push_back(baseline.cpu_s * kMsPerS);
+    variant_ms.push_back(variant.cpu_s * kMsPerS);
+    if (variant.cpu_s > 0.0) ratio.push_back(baseline.cpu_s / variant.cpu_s);
+    nodes.push_back(static_cast<double>(variant.nodes));
+    baseline_nodes.push_back(static_cast<double>(baseline.nodes));
+    baseline_s += baseline.cpu_s;
+    variant_s += variant.cpu_s;
+    nodes_total += variant.nodes;
+    stopped_total += variant.stopped_early;
+    if (same_nodes ? !baseline.sameSearchAs(variant) : !baseline.sameAnswerAs(variant)) ++differing;
+    if (!baseline.sameBestAs(variant)) ++best_differing;
   }
   MatcherSpeedRow row(const std::string& search) const {
     MatcherSpeedRow r;
     r.search = search;
-    r.scans = static_cast<int>(all_ms.size());
-    r.median_ms_reading_all = median(all_ms);
-    r.median_ms_stopping = median(stopping_ms);
+    r.scans = static_cast<int>(baseline_ms.size());
+    r.median_ms_baseline = median(baseline_ms);
+    r.median_ms_variant = median(variant_ms);
     r.median_ratio = ratio.empty() ? 0.0 : median(ratio);
-    r.total_ratio = stopping_s > 0.0 ? all_s / stopping_s : 0.0;
+    r.total_ratio = variant_s > 0.0 ? baseline_s / variant_s : 0.0;
     r.median_nodes = median(nodes);
+    r.median_nodes_baseline = median(baseline_nodes);
     r.share_stopped_early = nodes_total > 0 ? static_cast<double>(stopped_total) / static_cast<double>(nodes_total) : 0.0;
     r.differing = differing;
+    r.best_differing = best_differing;
     return r;
   }
 };
 
+/// Runs `search` with both searchers, `a_first` saying which goes first (whichever runs second
+/// finds the caches warm, so the callers take turns).
+template <typename Search>
+std::pair<Answer, Answer> sideBySide(const Searcher& a, const Searcher& b, bool a_first, const Search& search) {
+  Answer x, y;
+  if (a_first) {
+    x = search(a);
+    y = search(b);
+  } else {
+    y = search(b);
+    x = search(a);
+  }
+  return {x, y};
+}
+
 }  // namespace
 
-std::vector<MatcherSpeedRow> measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map, const LidarProfile& lidar,
-                                                 const MatcherSpeedParams& params, const std::function<void()>& progress) {
-  const Searcher reading_all(map, params.matcher, false, params.guard);
-  const Searcher stopping(map, params.matcher, true, params.guard);
+MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map, const LidarProfile& lidar,
+                                     const MatcherSpeedParams& params, const std::function<void()>& progress) {
+  if (!MatchRequest::validWallHeadingWindow(params.wall_heading_window_deg) || params.wall_heading_window_deg == 0.0)
+    throw InputError("wall-heading window", "must be above 0 and at most 45 deg");
+  const Searcher reading_all(map, params.matcher, false, params.guard, 0.0);
+  const Searcher stopping(map, params.matcher, true, params.guard, 0.0);
+  const Searcher windowed(map, params.matcher, true, params.guard, params.wall_heading_window_deg);
   const MclParams filter;  // the guard charges see-through beams as the filter does
   const SeeThroughPenalty see_through(map, filter.sensor, filter.see_through);
   TrialParams trial_params = params.trial;
   trial_params.steps = 0;  // the first scan is all a search sees
-  Tally whole_map, look_alike;
+  Tally whole_map, look_alike, whole_map_windowed, look_alike_windowed;
+  whole_map_windowed.same_nodes = look_alike_windowed.same_nodes = false;  // fewer headings, fewer nodes
   for (int i = 0; i < params.scans; ++i) {
     const auto trial = generateTrial(map, lidar, trial_params, params.seed + static_cast<uint64_t>(i));
     const auto& scan = *trial.scans.front();
     const auto& truth = trial.truth.front();
     const auto charge = see_through.forScan(scan);
-    // Whichever runs second finds the caches warm: the settings take turns going first.
-    const bool all_first = i % 2 == 0;
-    Answer a, b;
-    if (all_first) {
-      a = reading_all.wholeMap(scan);
-      b = stopping.wholeMap(scan);
-    } else {
-      b = stopping.wholeMap(scan);
-      a = reading_all.wholeMap(scan);
-    }
-    whole_map.add(a, b);
-    if (all_first) {
-      a = reading_all.lookAlike(scan, truth, charge);
-      b = stopping.lookAlike(scan, truth, charge);
-    } else {
-      b = stopping.lookAlike(scan, truth, charge);
-      a = reading_all.lookAlike(scan, truth, charge);
-    }
-    look_alike.add(a, b);
+    const bool first = i % 2 == 0;
+    const auto whole = [&](const Searcher& s) { return s.wholeMap(scan); };
+    const auto check = [&](const Searcher& s) { return s.lookAlike(scan, truth, charge); };
+    const auto [all_whole, stopping_whole] = sideBySide(reading_all, stopping, first, whole);
+    whole_map.add(all_whole, stopping_whole);
+    const auto [all_check, stopping_check] = sideBySide(reading_all, stopping, first, check);
+    look_alike.add(all_check, stopping_check);
+    const auto [every_whole, windowed_whole] = sideBySide(stopping, windowed, first, whole);
+    whole_map_windowed.add(every_whole, windowed_whole);
+    const auto [every_check, windowed_check] = sideBySide(stopping, windowed, first, check);
+    look_alike_windowed.add(every_check, windowed_check);
     if (progress) progress();
   }
-  return {whole_map.row("whole map"), look_alike.row("look-alike check")};
+  MatcherSpeedRows rows;
+  rows.stop_early = {whole_map.row("whole map"), look_alike.row("look-alike check")};
+  rows.wall_headings = {whole_map_windowed.row("whole map"), look_alike_windowed.row("look-alike check")};
+  return rows;
 }
 
 std::string matcherSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
@@ -148,10 +187,24 @@ std::string matcherSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
         "ratios) | speed-up (total) | median nodes | nodes stopped early | scans answered differently |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows)
-    md << "| " << r.search << " | " << r.scans << " | " << formatNumber(r.median_ms_reading_all) << " | "
-       << formatNumber(r.median_ms_stopping) << " | " << formatNumber(r.median_ratio) << "x | " << formatNumber(r.total_ratio)
+    md << "| " << r.search << " | " << r.scans << " | " << formatNumber(r.median_ms_baseline) << " | "
+       << formatNumber(r.median_ms_variant) << " | " << formatNumber(r.median_ratio) << "x | " << formatNumber(r.total_ratio)
        << "x | " << std::llround(r.median_nodes) << " | " << formatNumber(100.0 * r.share_stopped_early) << " % | "
        << r.differing << " |\n";
+  return md.str();
+}
+
+std::string wallHeadingSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
+  std::ostringstream md;
+  md << "| search | scans | median ms, every heading | median ms, wall headings | speed-up (median of per-scan "
+        "ratios) | speed-up (total) | median nodes, every heading | median nodes, wall headings | best answer "
+        "differs | any answer differs |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows)
+    md << "| " << r.search << " | " << r.scans << " | " << formatNumber(r.median_ms_baseline) << " | "
+       << formatNumber(r.median_ms_variant) << " | " << formatNumber(r.median_ratio) << "x | " << formatNumber(r.total_ratio)
+       << "x | " << std::llround(r.median_nodes_baseline) << " | " << std::llround(r.median_nodes) << " | " << r.best_differing
+       << " | " << r.differing << " |\n";
   return md.str();
 }
 

@@ -16,8 +16,10 @@
 namespace krp {
 
 /// What krp-bench-matcher measures: the correlative matcher's two kinds of search on simulated
-/// first scans, each run with CorrelativeMatcherParams::stop_bound_early off and on, side by side
-/// on the same scan (alternating which goes first), so that the ratio survives a noisy machine.
+/// first scans, each run with CorrelativeMatcherParams::stop_bound_early off and on, and (bounds
+/// stopping early) over every heading and over the wall-heading windows
+/// (MatchRequest::wall_heading_window_deg), side by side on the same scan (alternating which goes
+/// first), so that the ratios survive a noisy machine.
 struct MatcherSpeedParams {
   int scans = 30;     ///< first scans of simulated trials, one per trial seed
   uint64_t seed = 1;  ///< trial i uses seed + i
@@ -26,28 +28,42 @@ struct MatcherSpeedParams {
   /// The look-alike search as the filter's guard runs it (its margin, node budget, see-through charge).
   LookAlikeGuardParams guard;
   TrialParams trial;  ///< where the scans come from (clutter, scanner noise)
+  /// The windows of the wall-heading comparison [deg], for both searches (the guard's too).
+  double wall_heading_window_deg = 5.0;
 };
 
-/// One kind of search over every scan.
+/// One kind of search over every scan, in a baseline setting and a variant.
 struct MatcherSpeedRow {
   std::string search;          ///< "whole map" or "look-alike check"
   int scans = 0;
-  double median_ms_reading_all = 0.0;  ///< thread CPU per search, every return read [ms]
-  double median_ms_stopping = 0.0;     ///< the same with bounds that stop early [ms]
-  double median_ratio = 0.0;           ///< median over scans of reading-all / stopping time
-  double total_ratio = 0.0;            ///< total reading-all time / total stopping time
-  double median_nodes = 0.0;           ///< nodes scored per search (the same both ways)
-  double share_stopped_early = 0.0;    ///< of all nodes scored, those whose bound stopped early
-  int differing = 0;                   ///< scans whose answer or node count differed (should be 0)
+  double median_ms_baseline = 0.0;  ///< thread CPU per search in the baseline setting [ms]
+  double median_ms_variant = 0.0;   ///< the same in the variant [ms]
+  double median_ratio = 0.0;        ///< median over scans of baseline / variant time
+  double total_ratio = 0.0;         ///< total baseline time / total variant time
+  double median_nodes = 0.0;        ///< nodes scored per search in the variant
+  double median_nodes_baseline = 0.0;
+  double share_stopped_early = 0.0;  ///< of all the variant's nodes, those whose bound stopped early
+  int differing = 0;                 ///< scans whose answer or node count differed
+  int best_differing = 0;            ///< scans whose best answer differed
+};
+
+/// Both comparisons, row for row (whole map, then look-alike check).
+struct MatcherSpeedRows {
+  /// Every return read (baseline) against bounds that stop early: must answer alike (differing 0).
+  std::vector<MatcherSpeedRow> stop_early;
+  /// Every heading (baseline) against the wall-heading windows, bounds stopping early in both.
+  /// Differing counts scans answered differently; the node counts differ by design.
+  std::vector<MatcherSpeedRow> wall_headings;
 };
 
 /// Runs the measurement on `map` (clutter is drawn into the simulation copy only). `progress`
 /// is told after each scan. Throws InputError when the map has no pose a trial can start from.
-std::vector<MatcherSpeedRow> measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map, const LidarProfile& lidar,
-                                                 const MatcherSpeedParams& params,
-                                                 const std::function<void()>& progress = {});
+MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map, const LidarProfile& lidar,
+                                     const MatcherSpeedParams& params, const std::function<void()>& progress = {});
 
-/// The rows as a Markdown table.
+/// The stop-early rows as a Markdown table.
 std::string matcherSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows);
+/// The wall-heading rows as a Markdown table.
+std::string wallHeadingSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows);
 
 }  // namespace krp

@@ -31,6 +31,8 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
   if (params_.max_nodes_per_update < 0 || params_.max_nodes_per_update > LookAlikeGuardParams::kMaxSearchNodesLimit)
     throw std::invalid_argument("LookAlikeGuard: max_nodes_per_update must be 0 (no limit) to " +
                                 std::to_string(LookAlikeGuardParams::kMaxSearchNodesLimit));
+  if (!MatchRequest::validWallHeadingWindow(params_.wall_heading_window_deg))
+    throw std::invalid_argument("LookAlikeGuard: wall_heading_window_deg must be 0 (every heading) to 45");
   if (params_.searches_per_update < 1) throw std::invalid_argument("LookAlikeGuard: searches_per_update must be at least 1");
   if (!(params_.min_fit_fraction >= 0.0 && params_.min_fit_fraction <= 1.0))
     throw std::invalid_argument("LookAlikeGuard: min_fit_fraction must be in [0, 1]");
@@ -76,6 +78,7 @@ std::unique_ptr<LookAlikeSearchInProgress> LookAlikeGuard::beginSearch(
   request.excluded = {{pose.x, pose.y}};  // the tracked place found again is no alternative to it
   request.excluded.insert(request.excluded.end(), also_excluded.begin(), also_excluded.end());
   request.max_nodes_scored = params_.max_search_nodes;
+  request.wall_heading_window_deg = params_.wall_heading_window_deg;
   if (const auto* charged = searchCharge(see_through)) {
     const SeeThroughPenalty::Scan* used = charged;
     if (own_charge) {

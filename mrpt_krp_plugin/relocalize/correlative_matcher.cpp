@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
 
+#include <mrpt/math/wrap2pi.h>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -59,6 +60,7 @@ CorrelativeMatcher::CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& ma
     levels_.push_back(next);
   }
   for (const auto& level : levels_) CV_Assert(level.isContinuous());  // Rotation::linear indexes them
+  map_axes_ = mapWallAxes(map, params_.wall_axes);
 }
 
 namespace {
@@ -214,7 +216,7 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
   const InRegion in_region = [&](int cx, int cy, int level) { return windowHoldsRegion(region_sum, cx, cy, level); };
   const auto points = returns(scan);
   if (points.size() < 3) return {};
-  const auto rotations = rotationsOf(points);
+  const auto rotations = rotationsOf(points, scan, request);
 
   const double bar = request.min_score.value_or(params_.min_score);
   auto excluded = request.excluded;  // and every solution found, as each search ends
@@ -340,11 +342,31 @@ cv::Mat CorrelativeMatcher::regionSum(const cv::Mat& region) const {
   return sum;
 }
 
-std::vector<CorrelativeMatcher::Rotation> CorrelativeMatcher::rotationsOf(
-    const std::vector<mrpt::math::TPoint2D>& points) const {
+std::vector<double> CorrelativeMatcher::wallAlignedHeadings(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                            const MatchRequest& request) const {
+  if (!(request.wall_heading_window_deg > 0.0) || map_axes_.support < params_.min_wall_support) return {};
+  const WallAxes scan_axes = scanWallAxes(scan, params_.wall_axes);
+  if (scan_axes.support < params_.min_wall_support) return {};
+  return wallAlignedMapHeadings(scan_axes, map_axes_);
+}
+
+std::vector<CorrelativeMatcher::Rotation> CorrelativeMatcher::rotationsOf(const std::vector<mrpt::math::TPoint2D>& points,
+                                                                          const mrpt::obs::CObservation2DRangeScan& scan,
+                                                                          const MatchRequest& request) const {
+  const auto centres = wallAlignedHeadings(scan, request);
+  const double window = request.wall_heading_window_deg * M_PI / 180.0;
+  const auto in_window = [&](double phi) {
+    if (centres.empty()) return true;
+    for (double c : centres)
+      if (std::abs(mrpt::math::wrapToPi(phi - c)) <= window) return true;
+    return false;
+  };
   std::vector<Rotation> rotations;
   const int n_rot = std::max(1, static_cast<int>(std::lround(360.0 / params_.angular_step_deg)));
-  for (int k = 0; k < n_rot; ++k) rotations.push_back(rotate(points, -M_PI + 2.0 * M_PI * k / n_rot));
+  for (int k = 0; k < n_rot; ++k) {
+    const double phi = -M_PI + 2.0 * M_PI * k / n_rot;
+    if (in_window(phi)) rotations.push_back(rotate(points, phi));
+  }
   return rotations;
 }
 
@@ -375,7 +397,7 @@ std::unique_ptr<CorrelativeMatcher::Search> CorrelativeMatcher::setUpSearch(cons
     search->finished_ = true;
     return search;
   }
-  search->rotations_ = rotationsOf(points);
+  search->rotations_ = rotationsOf(points, scan, request);
   return search;
 }
 

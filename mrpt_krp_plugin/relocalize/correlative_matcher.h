@@ -16,6 +16,7 @@
 #include <queue>
 #include <vector>
 
+#include "mrpt_krp_plugin/submap/wall_axes.h"
 #include "mrpt_krp_plugin/zones/zone.h"
 
 namespace krp {
@@ -39,6 +40,14 @@ struct CorrelativeMatcherParams {
   /// return scores above 1). The answers and the nodes scored are the same either way; false
   /// reads every return, for the side-by-side benchmark (krp-bench-matcher).
   bool stop_bound_early = true;
+  /// How the map's and a scan's wall directions are measured, for a request's
+  /// wall_heading_window_deg.
+  WallAxesParams wall_axes;
+  /// A request's wall_heading_window_deg narrows the headings only when at least this share of
+  /// the wall length of the map and of the scan lies along their dominant direction
+  /// (WallAxes::support): a map with walls at several angles, or a scan of clutter, keeps every
+  /// heading [0..1].
+  double min_wall_support = 0.5;
 };
 
 /// What one match() looks for; every field left empty keeps the parameters' choice.
@@ -63,6 +72,15 @@ struct MatchRequest {
   /// answer, which may not be the best there is (lastSearchCutShort() says so). 0: no limit, the
   /// search is exact. Without leaf_penalty the depth-first search is exact and ignores this.
   long long max_nodes_scored = 0;
+  /// Above 0: only headings within this of one at which the scan's walls lie along the map's
+  /// (wallAlignedMapHeadings), when both have a clear wall direction (min_wall_support); else
+  /// every heading. Where walls meet at right angles, a place the scan fits has its walls along
+  /// the map's, and four narrow windows replace the full turn [deg]. 0: every heading.
+  double wall_heading_window_deg = 0.0;
+  /// Windows of 45 deg around four headings 90 deg apart already cover every heading.
+  static constexpr double kMaxWallHeadingWindowDeg = 45.0;
+  /// Whether `deg` is a wall_heading_window_deg one can ask for: 0 to kMaxWallHeadingWindowDeg.
+  static bool validWallHeadingWindow(double deg) { return deg >= 0.0 && deg <= kMaxWallHeadingWindowDeg; }
 
   /// Only poses inside `region`, everything else as the parameters say.
   static MatchRequest within(const cv::Mat& region) {
@@ -169,8 +187,12 @@ class CorrelativeMatcher {
   cv::Mat regionSum(const cv::Mat& region) const;
   /// Whether a node's window (level `level` at cx, cy) holds any of the region, in O(1).
   static bool windowHoldsRegion(const cv::Mat& region_sum, int cx, int cy, int level);
-  /// The returns turned to every heading of the search (angular_step_deg apart).
-  std::vector<Rotation> rotationsOf(const std::vector<mrpt::math::TPoint2D>& points) const;
+  /// The returns turned to every heading of the search (angular_step_deg apart), or to those the
+  /// request's wall_heading_window_deg leaves.
+  std::vector<Rotation> rotationsOf(const std::vector<mrpt::math::TPoint2D>& points,
+                                    const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request) const;
+  /// The headings at whose window a request narrows the search (empty: every heading).
+  std::vector<double> wallAlignedHeadings(const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request) const;
   mrpt::math::TPose2D poseOf(int cx, int cy, double phi) const;  ///< a search-grid cell's centre, heading phi
   /// The scan's returns in the robot frame, evenly decimated to max_points.
   std::vector<mrpt::math::TPoint2D> returns(const mrpt::obs::CObservation2DRangeScan& scan) const;
@@ -201,6 +223,7 @@ class CorrelativeMatcher {
   std::vector<cv::Mat> levels_;
   int margin_ = 0;               ///< margin_m in cells
   cv::Mat free_;                 ///< CV_8U, robot may stand here
+  WallAxes map_axes_;            ///< the map's wall direction, for wall_heading_window_deg
   double x_min_ = 0, y_min_ = 0;
   mutable long long nodes_scored_ = 0;
   mutable long long nodes_stopped_early_ = 0;

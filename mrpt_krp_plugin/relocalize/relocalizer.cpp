@@ -53,6 +53,9 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
   requireTrainingMap(manifest_, map, params.training_map);
   if (params_.cross_check.enabled && params_.cross_check.max_rounds < 1)
     throw InputError("cross-check max_rounds", "must be 1 or more when the cross-check is on");
+  if (!MatchRequest::validWallHeadingWindow(params_.wall_heading_window_deg))
+    throw InputError("wall_heading_window_deg", "must be 0 (every heading) to 45, got " +
+                                                    std::to_string(params_.wall_heading_window_deg));
   if (params_.cross_check.enabled) matcher_.emplace(map, params_.matcher);
   if (given_zones)
     enableZoneSearch(map, *given_zones);
@@ -87,7 +90,9 @@ std::vector<PoseHypothesis> Relocalizer::zoneSearch(const mrpt::obs::CObservatio
   if (zones.empty()) return found;
   cv::Mat region = zone_regions_[zones.front()].clone();
   for (size_t i = 1; i < zones.size(); ++i) cv::bitwise_or(region, zone_regions_[zones[i]], region);
-  for (const auto& s : matcher_->match(scan, MatchRequest::within(region))) {
+  MatchRequest request = MatchRequest::within(region);
+  request.wall_heading_window_deg = params_.wall_heading_window_deg;
+  for (const auto& s : matcher_->match(scan, request)) {
     PoseHypothesis h = hypothesisFromMatch(s, params_.matcher);
     h.zone = zones.front();
     h.zone_probability = zone_probabilities[zones.front()];
@@ -102,6 +107,7 @@ std::vector<PoseHypothesis> Relocalizer::crossCheck(const mrpt::obs::CObservatio
   MatchRequest request;
   request.min_score = std::max(bar, params_.matcher.min_score);
   request.solutions = params_.cross_check.places;
+  request.wall_heading_window_deg = params_.wall_heading_window_deg;
   // A place already ranked, found again, is no alternative to it.
   for (const auto& h : ranking.hypotheses) request.excluded.push_back({h.pose.x, h.pose.y});
   std::vector<PoseHypothesis> found;

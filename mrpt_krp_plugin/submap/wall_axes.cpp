@@ -128,6 +128,12 @@ std::vector<double> wallAlignedImageHeadings(const WallAxes& scan_axes) {
   return out;
 }
 
+std::vector<double> wallAlignedMapHeadings(const WallAxes& scan_axes, const WallAxes& map_axes) {
+  std::vector<double> out;
+  for (int k = 0; k < 4; ++k) out.push_back(mrpt::math::wrapToPi(map_axes.angle_rad - scan_axes.angle_rad + k * kQuarterTurn));
+  return out;
+}
+
 double nearestHeading(const std::vector<double>& candidates_rad, double heading_rad) {
   double best = std::numeric_limits<double>::quiet_NaN(), best_diff = std::numeric_limits<double>::infinity();
   for (double c : candidates_rad) {

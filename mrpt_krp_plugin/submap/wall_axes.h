@@ -47,6 +47,12 @@ WallAxes mapWallAxes(const mrpt::maps::COccupancyGridMap2D& map, const WallAxesP
 /// the image's columns (to the right), counter-clockwise positive.
 std::vector<double> wallAlignedImageHeadings(const WallAxes& scan_axes);
 
+/// The four headings of a robot in the map at which the scan's walls (`scan_axes`, robot frame)
+/// lie along the map's (`map_axes`, map frame): map - scan + k * 90 deg, in [-180, 180) deg. In a
+/// building whose walls meet at right angles, a pose at any other heading crosses the map's walls
+/// with the scan's.
+std::vector<double> wallAlignedMapHeadings(const WallAxes& scan_axes, const WallAxes& map_axes);
+
 /// The candidate closest to `heading_rad` (angles compared modulo 360 deg).
 double nearestHeading(const std::vector<double>& candidates_rad, double heading_rad);
 

@@ -69,6 +69,29 @@ TEST(LookAlikeGuard, FindsTheBetterPlaceOnlyFromTheWrongOne) {
   EXPECT_FALSE(guard.lookAlike(*scan, kTruth).has_value()) << "the twin fits worse than the truth";
 }
 
+// The wall-heading windows keep the search to the headings that line the scan's walls up with
+// the room's: the twin's truth is found as over the full turn, for fewer nodes.
+TEST(LookAlikeGuard, AWallHeadingWindowFindsTheSameLookAlikeForFewerNodes) {
+  const auto room = test::asymmetricRoom();
+  const auto matcher = std::make_shared<CorrelativeMatcher>(room);
+  LookAlikeGuardParams windowed = withAmbiguityMargin(0.0);
+  windowed.wall_heading_window_deg = 5.0;
+  const LookAlikeGuard every(matcher, withAmbiguityMargin(0.0)), narrow(matcher, windowed);
+  const auto scan = scanAtTruth(room, 1);
+  const auto full = every.lookAlike(*scan, kTwin);
+  const long long full_nodes = matcher->lastNodesScored();
+  const auto found = narrow.lookAlike(*scan, kTwin);
+  ASSERT_TRUE(full.has_value());
+  ASSERT_TRUE(found.has_value());
+  EXPECT_DOUBLE_EQ(found->pose.x, full->pose.x);
+  EXPECT_DOUBLE_EQ(found->pose.y, full->pose.y);
+  EXPECT_DOUBLE_EQ(found->score, full->score);
+  EXPECT_LT(matcher->lastNodesScored(), full_nodes / 2);
+  LookAlikeGuardParams bad;
+  bad.wall_heading_window_deg = -1.0;
+  EXPECT_THROW(LookAlikeGuard(matcher, bad), std::invalid_argument);
+}
+
 TEST(LookAlikeGuard, RefusesMarginsThatContradictEachOther) {
   const auto matcher = std::make_shared<CorrelativeMatcher>(test::asymmetricRoom());
   LookAlikeGuardParams p;

@@ -100,6 +100,23 @@ TEST(WallAxes, FourCandidateHeadingsAQuarterTurnApartOneOfThemTheTruth) {
   EXPECT_DOUBLE_EQ(nearestHeading({3.1, -1.0}, -3.1), 3.1);  // across the +-180 deg seam
 }
 
+// In a map whose walls run at 20 deg, a robot whose scan sees them at 5 deg in its own frame
+// stands at 15 deg or a quarter turn from it.
+TEST(WallAxes, MapHeadingsLineTheScansWallsUpWithTheMaps) {
+  const auto room = turnedRoom(20.0 * kDeg);
+  const double heading = 15.0 * kDeg + M_PI / 2;
+  const auto scan = scanAt(room, mrpt::poses::CPose2D(1.0, 0.5, heading), true);
+  const auto headings = wallAlignedMapHeadings(scanWallAxes(*scan), mapWallAxes(room));
+  ASSERT_EQ(headings.size(), 4u);
+  for (size_t k = 1; k < 4; ++k)
+    EXPECT_NEAR(std::abs(mrpt::math::wrapToPi(headings[k] - headings[k - 1])), M_PI / 2, 1e-9);
+  EXPECT_NEAR(mrpt::math::wrapToPi(nearestHeading(headings, heading) - heading), 0.0, 1.5 * kDeg);
+  WallAxes scan_axes, map_axes;
+  scan_axes.angle_rad = 5.0 * kDeg;
+  map_axes.angle_rad = 20.0 * kDeg;
+  EXPECT_NEAR(wallAlignedMapHeadings(scan_axes, map_axes).front(), 15.0 * kDeg, 1e-12);
+}
+
 TEST(WallAxes, RejectsBadParameters) {
   const auto scan = scanAt(test::asymmetricRoom(), mrpt::poses::CPose2D(5.0, 3.5, 0), false);
   WallAxesParams p;
