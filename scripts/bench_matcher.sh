@@ -5,18 +5,21 @@
 # the wall-heading windows (MatchRequest::wall_heading_window_deg, 5 deg), on the same scans. Worlds office_two_zone,
 # warehouse and large_floor with their default lidars, and, when ../shared/data holds it, the map
 # of the Freiburg 101 log (its odd scans, as scripts/check_freiburg.sh builds it) with the log's
-# SICK LMS profile (third-party data: only the numbers go into the report). 20 scans each, seed 1
-# (~3 min on 2 cores).
+# SICK LMS profile (third-party data: only the numbers go into the report); the cluttered office
+# and the office with the 3.5 m lds01 lidar as well. 50 scans each, seed 1 (~10 min on 2 cores).
 # Usage: scripts/bench_matcher.sh [DATA_DIR]   (build first with scripts/build.sh)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 bin=./build/mrpt_krp_plugin/apps
 out=reports/matcher_speed
-scans=20
+scans=50
 for world in office_two_zone warehouse large_floor; do
   "$bin/krp-bench-matcher" --world "$world" --scans "$scans" --seed 1 --out "$out/$world"
 done
+# The scans least kind to the wall-heading windows: unmapped clutter, and the 3.5 m lidar.
+"$bin/krp-bench-matcher" --world office_cluttered --scans "$scans" --seed 1 --out "$out/office_cluttered"
+"$bin/krp-bench-matcher" --world office_two_zone --lidar lds01 --scans "$scans" --seed 1 --out "$out/office_two_zone_lds01"
 
 log="${1:-../shared/data/freiburg-101}/freiburg-101-corrected.log.gz"
 if [[ ! -f "$log" ]]; then

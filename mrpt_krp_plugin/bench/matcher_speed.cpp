@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/bench/matcher_speed.h"
 
+#include <mrpt/math/wrap2pi.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -13,6 +15,7 @@
 #include "mrpt_krp_plugin/common/thread_cpu_time.h"
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
 #include "mrpt_krp_plugin/filter/see_through.h"
+#include "mrpt_krp_plugin/submap/wall_axes.h"
 
 namespace krp {
 namespace {
@@ -155,6 +158,8 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
   const SeeThroughPenalty see_through(map, filter.sensor, filter.see_through);
   TrialParams trial_params = params.trial;
   trial_params.steps = 0;  // the first scan is all a search sees
+  const WallAxes map_axes = mapWallAxes(map, params.matcher.wall_axes);
+  MatcherSpeedRows rows;
   Tally whole_map, look_alike, whole_map_windowed, look_alike_windowed;
   whole_map_windowed.same_nodes = look_alike_windowed.same_nodes = false;  // fewer headings, fewer nodes
   for (int i = 0; i < params.scans; ++i) {
@@ -162,6 +167,14 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
     const auto& scan = *trial.scans.front();
     const auto& truth = trial.truth.front();
     const auto charge = see_through.forScan(scan);
+    const WallAxes scan_axes = scanWallAxes(scan, params.matcher.wall_axes);
+    ++rows.scans;
+    if (map_axes.support >= params.matcher.min_wall_support && scan_axes.support >= params.matcher.min_wall_support) {
+      ++rows.narrowed_scans;
+      const double nearest = nearestHeading(wallAlignedMapHeadings(scan_axes, map_axes), truth.phi);
+      rows.max_heading_error_deg =
+          std::max(rows.max_heading_error_deg, std::abs(mrpt::math::wrapToPi(nearest - truth.phi)) * 180.0 / M_PI);
+    }
     const bool first = i % 2 == 0;
     const auto whole = [&](const Searcher& s) { return s.wholeMap(scan); };
     const auto check = [&](const Searcher& s) { return s.lookAlike(scan, truth, charge); };
@@ -175,7 +188,6 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
     look_alike_windowed.add(every_check, windowed_check);
     if (progress) progress();
   }
-  MatcherSpeedRows rows;
   rows.stop_early = {whole_map.row("whole map"), look_alike.row("look-alike check")};
   rows.wall_headings = {whole_map_windowed.row("whole map"), look_alike_windowed.row("look-alike check")};
   return rows;

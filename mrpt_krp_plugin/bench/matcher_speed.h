@@ -54,6 +54,11 @@ struct MatcherSpeedRows {
   /// Every heading (baseline) against the wall-heading windows, bounds stopping early in both.
   /// Differing counts scans answered differently; the node counts differ by design.
   std::vector<MatcherSpeedRow> wall_headings;
+  /// Scans whose headings the windows narrowed (both wall directions clear), of all scans.
+  int narrowed_scans = 0, scans = 0;
+  /// Over the narrowed scans: the true heading's largest distance to the nearest window centre
+  /// (beyond the window, the search cannot find the truth) [deg].
+  double max_heading_error_deg = 0.0;
 };
 
 /// Runs the measurement on `map` (clutter is drawn into the simulation copy only). `progress`
