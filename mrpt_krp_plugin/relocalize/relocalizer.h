@@ -88,11 +88,12 @@ struct RelocalizerParams {
   CorrelativeMatcherParams matcher;  ///< for the zone search and the cross-check
   /// The zone search and the cross-check try only headings within this of the four that line the
   /// scan's walls up with the map's (MatchRequest::wall_heading_window_deg), when both have a
-  /// clear wall direction [deg]. 0: every heading. 5: the scans' wall direction fell within 3 deg
-  /// of the truth's in 1,000 simulated first scans (clutter and the 3.5 m lidar included), and on
-  /// the office, warehouse and large_floor trials the scan to prior fell 1.4-3.9x with one outcome
-  /// of 290 changed (docs/results.md, "Headings from the walls"). Maps whose walls run several
-  /// ways (the real maps tried) keep every heading.
+  /// clear wall direction [deg]. 0: every heading. 5: on 250 simulated first scans the true
+  /// heading lay within 2.3 deg of a window's centre (reports/matcher_speed, clutter and the 3.5 m
+  /// lidar included), and over 290 office, warehouse, large_floor and cluttered-office trials the
+  /// scan to prior fell 1.4-3.9x with one outcome changed, in a warehouse trial whose scans cannot
+  /// tell the truth from another place (docs/results.md, "Headings from the walls"). The real
+  /// maps tried have no clear wall direction and keep every heading.
   double wall_heading_window_deg = 5.0;
   OnnxRuntimeParams onnx;
   /// A scan whose field of view differs from the manifest's lidar by more than this is refused:
