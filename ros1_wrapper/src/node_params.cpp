@@ -90,6 +90,8 @@ const std::map<std::string, Reader>& readers() {
       {"top_turns", integer(&NodeParams::top_turns, 1, kMaxSubmapTurns)},
       {"stop_turns_once_localized", boolean(&NodeParams::stop_turns_once_localized)},
       {"search_zones", integer(&NodeParams::search_zones, 0, kMaxSearchZones)},
+      {"wall_heading_window_deg",
+       number(&NodeParams::wall_heading_window_deg, 0.0, MatchRequest::kMaxWallHeadingWindowDeg)},
       {"relocalize_on_startup", boolean(&NodeParams::relocalize_on_startup)},
       {"relocalize_on_kidnap", boolean(&NodeParams::relocalize_on_kidnap)},
       {"publish_when_not_localized", boolean(&NodeParams::publish_when_not_localized)},
@@ -163,6 +165,7 @@ HypothesisSourceParams NodeParams::hypothesisSource() const {
   h.learned.top_turns = top_turns;
   h.learned.stop_turns_once_localized = stop_turns_once_localized;
   h.learned.zone_search.zones = search_zones;
+  h.learned.wall_heading_window_deg = wall_heading_window_deg;
   useMinLocalizedFitFraction(min_localized_fit_fraction, h.learned, h.matcher);
   if (!calibration_file.empty()) useConfidenceCalibration(readConfidenceCalibration(calibration_file), h.learned, h.matcher);
   return h;

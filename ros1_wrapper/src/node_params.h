@@ -42,6 +42,10 @@ struct NodeParams {
   /// `learned`, with zones: the classifier's most likely zones the correlative matcher searches
   /// when the keypoints give no credible pose (ZoneSearchParams::zones; 0 = no zone search)
   int search_zones = ZoneSearchParams{}.zones;
+  /// `learned`: the zone search and the cross-check try only headings within this of the four
+  /// that line the scan's walls up with the map's, when both have a clear wall direction
+  /// (RelocalizerParams::wall_heading_window_deg; 0 = every heading) [deg]
+  double wall_heading_window_deg = RelocalizerParams{}.wall_heading_window_deg;
   bool relocalize_on_startup = true;       ///< relocalize from the first scan
   bool relocalize_on_kidnap = false;       ///< relocalize when the tracked pose stops fitting the scans
   bool publish_when_not_localized = false;  ///< publish `initialpose` even when the relocalizer is unsure

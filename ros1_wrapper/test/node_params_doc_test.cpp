@@ -31,6 +31,7 @@ TEST(RosNodeParams, TheYamlDefaultsAreTheNodesDefaults) {
   EXPECT_EQ(doc["top_turns"].as<int>(), d.top_turns);
   EXPECT_EQ(doc["stop_turns_once_localized"].as<bool>(), d.stop_turns_once_localized);
   EXPECT_EQ(doc["search_zones"].as<int>(), d.search_zones);
+  EXPECT_DOUBLE_EQ(doc["wall_heading_window_deg"].as<double>(), d.wall_heading_window_deg);
   EXPECT_EQ(doc["max_particles"].as<int>(), d.max_particles);
   EXPECT_DOUBLE_EQ(doc["max_scan_age_s"].as<double>(), d.max_scan_age_s);
   EXPECT_DOUBLE_EQ(doc["trigger_timeout_s"].as<double>(), d.trigger_timeout_s);
@@ -106,8 +107,11 @@ TEST(RosNodeParams, TheTurnAndZoneSearchSettingsReachTheLearnedRelocalizer) {
   p.top_turns = 4;
   p.stop_turns_once_localized = false;
   p.search_zones = 3;
+  p.wall_heading_window_deg = 0.0;
   const auto h = p.hypothesisSource();
   EXPECT_EQ(h.learned.zone_search.zones, 3);
+  EXPECT_EQ(h.learned.wall_heading_window_deg, 0.0);
+  EXPECT_EQ(NodeParams{}.hypothesisSource().learned.wall_heading_window_deg, RelocalizerParams{}.wall_heading_window_deg);
   EXPECT_EQ(h.learned.top_turns, 4);
   EXPECT_FALSE(h.learned.stop_turns_once_localized);
   EXPECT_EQ(NodeParams{}.hypothesisSource().learned.top_turns, RelocalizerParams{}.top_turns);
