@@ -158,7 +158,6 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
   const SeeThroughPenalty see_through(map, filter.sensor, filter.see_through);
   TrialParams trial_params = params.trial;
   trial_params.steps = 0;  // the first scan is all a search sees
-  const WallAxes map_axes = mapWallAxes(map, params.matcher.wall_axes);
   MatcherSpeedRows rows;
   Tally whole_map, look_alike, whole_map_windowed, look_alike_windowed;
   whole_map_windowed.same_nodes = look_alike_windowed.same_nodes = false;  // fewer headings, fewer nodes
@@ -167,11 +166,10 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
     const auto& scan = *trial.scans.front();
     const auto& truth = trial.truth.front();
     const auto charge = see_through.forScan(scan);
-    const WallAxes scan_axes = scanWallAxes(scan, params.matcher.wall_axes);
     ++rows.scans;
-    if (map_axes.support >= params.matcher.min_wall_support && scan_axes.support >= params.matcher.min_wall_support) {
+    if (const auto centres = windowed.matcher->wallAlignedHeadings(scan, windowed.whole_map); !centres.empty()) {
       ++rows.narrowed_scans;
-      const double nearest = nearestHeading(wallAlignedMapHeadings(scan_axes, map_axes), truth.phi);
+      const double nearest = nearestHeading(centres, truth.phi);
       rows.max_heading_error_deg =
           std::max(rows.max_heading_error_deg, std::abs(mrpt::math::wrapToPi(nearest - truth.phi)) * 180.0 / M_PI);
     }

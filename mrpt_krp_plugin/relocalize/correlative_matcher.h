@@ -112,6 +112,11 @@ class CorrelativeMatcher {
   /// are skipped unscored.
   std::vector<MatchSolution> match(const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request = {}) const;
 
+  /// The centres of the heading windows to which `request` narrows the search for `scan` (its
+  /// wall_heading_window_deg, where the map's and the scan's wall directions are clear); empty
+  /// when every heading is searched.
+  std::vector<double> wallAlignedHeadings(const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request) const;
+
   /// The score match() gives `pose` (same returns, same grid), without searching: how well the
   /// scan fits there in the matcher's own units.
   double scoreAt(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& pose) const;
@@ -191,8 +196,6 @@ class CorrelativeMatcher {
   /// request's wall_heading_window_deg leaves.
   std::vector<Rotation> rotationsOf(const std::vector<mrpt::math::TPoint2D>& points,
                                     const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request) const;
-  /// The headings at whose window a request narrows the search (empty: every heading).
-  std::vector<double> wallAlignedHeadings(const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request) const;
   mrpt::math::TPose2D poseOf(int cx, int cy, double phi) const;  ///< a search-grid cell's centre, heading phi
   /// The scan's returns in the robot frame, evenly decimated to max_points.
   std::vector<mrpt::math::TPoint2D> returns(const mrpt::obs::CObservation2DRangeScan& scan) const;
