@@ -219,7 +219,7 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.unverified_is_unsettled = !args.flag("guard-unverified-is-settled");
   for (const char* flag : {"wall-heading-window", "guard-wall-heading-window"})
     if (!krp::MatchRequest::validWallHeadingWindow(args.number(flag)))
-      throw krp::InputError(std::string("--") + flag, "must be 0 (every heading) to 45");
+      throw krp::InputError(std::string("--") + flag, "must be " + krp::MatchRequest::wallHeadingWindowRange());
   cfg.method_settings.relocalizer.wall_heading_window_deg = args.number("wall-heading-window");
   cfg.method_settings.guard.wall_heading_window_deg = args.number("guard-wall-heading-window");
   krp::useMinLocalizedFitFraction(args.number("min-localized-fit"), cfg.method_settings.relocalizer,

@@ -32,7 +32,8 @@ LookAlikeGuard::LookAlikeGuard(std::shared_ptr<const CorrelativeMatcher> matcher
     throw std::invalid_argument("LookAlikeGuard: max_nodes_per_update must be 0 (no limit) to " +
                                 std::to_string(LookAlikeGuardParams::kMaxSearchNodesLimit));
   if (!MatchRequest::validWallHeadingWindow(params_.wall_heading_window_deg))
-    throw std::invalid_argument("LookAlikeGuard: wall_heading_window_deg must be 0 (every heading) to 45");
+    throw std::invalid_argument("LookAlikeGuard: wall_heading_window_deg must be " +
+                                MatchRequest::wallHeadingWindowRange());
   if (params_.searches_per_update < 1) throw std::invalid_argument("LookAlikeGuard: searches_per_update must be at least 1");
   if (!(params_.min_fit_fraction >= 0.0 && params_.min_fit_fraction <= 1.0))
     throw std::invalid_argument("LookAlikeGuard: min_fit_fraction must be in [0, 1]");

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <queue>
+#include <string>
 #include <vector>
 
 #include "mrpt_krp_plugin/submap/wall_axes.h"
@@ -81,6 +82,10 @@ struct MatchRequest {
   static constexpr double kMaxWallHeadingWindowDeg = 45.0;
   /// Whether `deg` is a wall_heading_window_deg one can ask for: 0 to kMaxWallHeadingWindowDeg.
   static bool validWallHeadingWindow(double deg) { return deg >= 0.0 && deg <= kMaxWallHeadingWindowDeg; }
+  /// What validWallHeadingWindow accepts, in words, for the messages that refuse a setting.
+  static std::string wallHeadingWindowRange() {
+    return "0 (every heading) to " + std::to_string(static_cast<int>(kMaxWallHeadingWindowDeg));
+  }
 
   /// Only poses inside `region`, everything else as the parameters say.
   static MatchRequest within(const cv::Mat& region) {

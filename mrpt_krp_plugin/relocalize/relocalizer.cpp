@@ -54,7 +54,7 @@ Relocalizer::Relocalizer(const std::string& models_dir, const mrpt::maps::COccup
   if (params_.cross_check.enabled && params_.cross_check.max_rounds < 1)
     throw InputError("cross-check max_rounds", "must be 1 or more when the cross-check is on");
   if (!MatchRequest::validWallHeadingWindow(params_.wall_heading_window_deg))
-    throw InputError("wall_heading_window_deg", "must be 0 (every heading) to 45, got " +
+    throw InputError("wall_heading_window_deg", "must be " + MatchRequest::wallHeadingWindowRange() + ", got " +
                                                     std::to_string(params_.wall_heading_window_deg));
   if (params_.cross_check.enabled) matcher_.emplace(map, params_.matcher);
   if (given_zones)

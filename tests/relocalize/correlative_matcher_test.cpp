@@ -102,6 +102,8 @@ TEST(CorrelativeMatcher, AWallHeadingWindowFindsTheSamePoseForFewerNodes) {
   EXPECT_FALSE(MatchRequest::validWallHeadingWindow(-1.0));
   EXPECT_FALSE(MatchRequest::validWallHeadingWindow(46.0));
   EXPECT_TRUE(MatchRequest::validWallHeadingWindow(0.0));
+  // The refusals name the accepted range from the limit itself, so the two cannot drift apart.
+  EXPECT_EQ(MatchRequest::wallHeadingWindowRange(), "0 (every heading) to 45");
 }
 
 TEST(CorrelativeMatcher, ASymmetricRoomGivesTwoEqualSolutions) {
