@@ -13,6 +13,7 @@
 #include "mrpt_krp_plugin/bench/line_plot.h"
 #include "mrpt_krp_plugin/bench/path_ambiguity_report.h"
 #include "mrpt_krp_plugin/bench/record_groups.h"
+#include "mrpt_krp_plugin/bench/seed_stage_times.h"
 #include "mrpt_krp_plugin/bench/reliability.h"
 #include "mrpt_krp_plugin/bench/report_format.h"
 #include "mrpt_krp_plugin/bench/scaling_report.h"
@@ -197,7 +198,8 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                 "particle_updates_to_convergence,final_error_xy_m,final_error_phi_deg,confident_but_wrong,confident_and_right,total_cpu_s,"
                 "look_alike_searches,look_alike_search_cpu_s,look_alike_searches_unfinished,seed_hypotheses,seed_localized,seed_best_error_xy_m,seed_best_confidence,seed_best_from_matcher,seed_best_fit_fraction,seed_cpu_s,kidnap_step,kidnap_tracking_before,"
                 "kidnap_updates_to_detect,kidnap_recovered,kidnap_updates_to_recover,kidnap_cpu_to_recover_s,"
-                "path_verdict,path_places,path_end_places,path_closest_log_ratio,path_closest_distance_m,path_closest_source\n";
+                "path_verdict,path_places,path_end_places,path_closest_log_ratio,path_closest_distance_m,path_closest_source"
+             << seedStageCsvHeader() << "\n";
   updates_csv << "world,lidar,method,trial,update,error_xy_m,error_phi_deg,std_xy_m,std_phi_deg,ambiguous,particles,cpu_s,"
                  "distance_m,fit_fraction,scan_unexplained,look_alike_searches,look_alike_search_cpu_s,look_alike_searches_unfinished,look_alike_unverified\n";
   for (const auto& r : records) {
@@ -213,7 +215,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
                << r.kidnap.tracking_before << "," << r.kidnap.updates_to_detect << "," << r.kidnap.recovered << ","
                << r.kidnap.updates_to_recover << "," << r.kidnap.cpu_to_recover_s << "," << toString(r.path.verdict) << ","
                << r.path.places << "," << r.path.end_places << "," << r.path.closest_log_ratio << ","
-               << r.path.closest_distance_m << "," << r.path.closest_source << "\n";
+               << r.path.closest_distance_m << "," << r.path.closest_source << seedStageCsvFields(r) << "\n";
     for (size_t i = 0; i < r.updates.size(); ++i) {
       const auto& u = r.updates[i];
       updates_csv << r.world << "," << r.lidar << "," << r.method << "," << r.trial << "," << i << "," << u.error_xy_m
@@ -313,6 +315,7 @@ void writeBenchReport(const std::vector<TrialRecord>& records, const BenchConfig
         "(the share of trials where the method both is right and says so). Medians of updates, distance, CPU and particle-updates are over "
         "converged trials. Ratios are against uniform-mcl in this same run.\n\n"
      << modelsSection(records) << summaryTable(summaries) << "\n" << relocalizerTable(summaries, cfg.criteria.max_error_xy_m)
+     << seedStageTable(summarizeSeedStages(records))
      // krp-bench sets both relocalizers' rankings alike; the learned one's stands for both.
      << reliabilitySections(records, cfg.criteria.max_error_xy_m, cfg.method_settings.relocalizer.verifier.ranking)
      << kidnapSection(summarizeKidnaps(records), cfg.kidnap_at_step)

@@ -183,6 +183,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
           rec.seed_hypotheses = static_cast<int>(ranking.hypotheses.size());
           rec.seed_localized = ranking.localized;
           rec.seed_cpu_s = seeded->lastSeeding()->cpu_s;
+          rec.seed_stage_times = seeded->lastSeeding()->stage_times;
           if (!ranking.hypotheses.empty()) {
             const auto& best = ranking.hypotheses.front().pose;
             rec.seed_best_confidence = ranking.hypotheses.front().confidence;

@@ -3,12 +3,14 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "mrpt_krp_plugin/bench/method_registry.h"
 #include "mrpt_krp_plugin/bench/path_ambiguity.h"
 #include "mrpt_krp_plugin/bench/trial_metrics.h"
+#include "mrpt_krp_plugin/relocalize/relocalization_times.h"
 #include "mrpt_krp_plugin/sim/trial.h"
 
 namespace krp {
@@ -59,6 +61,8 @@ struct TrialRecord {
   bool seed_best_from_matcher = false;  ///< its best came from a correlative search (seeded: the zone search)
   double seed_best_fit_fraction = -1.0;  ///< share of that scan's returns its best explains (ScanFit); -1 without one
   double seed_cpu_s = -1.0;        ///< thread CPU from that scan to the drawn prior [s]; -1 without one
+  /// Where that relocalization's time went, stage by stage (the learned relocalizer only).
+  std::optional<RelocalizationTimes> seed_stage_times;
   int kidnap_step = -1;            ///< the update the robot was carried before; -1 without a kidnap
   KidnapOutcome kidnap;            ///< valid when kidnap_step >= 0
   PathAmbiguity path;              ///< the trial's, the same for every method (BenchConfig::path_ambiguity)

@@ -77,9 +77,11 @@ std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, co
     if (!relocalizer) throw InputError("method '" + name + "'", "needs trained models (a models folder with manifest.json)");
     if (name == "seeded-no-uniform") seeded.uniform_fraction = 0.0;
     if (name == kSpreadCount) seeded.count_from_spread = KldSampleSizeParams{};
-    return std::make_shared<SeededInitializer>(
-        [relocalizer](const mrpt::obs::CObservation2DRangeScan& scan) { return relocalizer->relocalize(scan).ranking; },
-        seeded, name);
+    const SeededInitializer::TimedHypothesisSource source = [relocalizer](const mrpt::obs::CObservation2DRangeScan& scan) {
+      auto result = relocalizer->relocalize(scan);
+      return TimedRanking{std::move(result.ranking), result.times};
+    };
+    return std::make_shared<SeededInitializer>(source, seeded, name);
   }
   if (methodNeedsMatcher(name)) {
     const auto matcher = resources.matcher;

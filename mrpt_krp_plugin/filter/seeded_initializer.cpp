@@ -63,6 +63,13 @@ std::vector<mrpt::math::TPose2D> mixtureDraws(const std::vector<Cloud>& clouds, 
 }  // namespace
 
 SeededInitializer::SeededInitializer(HypothesisSource source, SeededInitParams params, std::string name)
+    : SeededInitializer(
+          TimedHypothesisSource([source = std::move(source)](const mrpt::obs::CObservation2DRangeScan& scan) {
+            return TimedRanking{source(scan), std::nullopt};
+          }),
+          params, std::move(name)) {}
+
+SeededInitializer::SeededInitializer(TimedHypothesisSource source, SeededInitParams params, std::string name)
     : source_(std::move(source)), params_(params), name_(std::move(name)) {
   if (!(params_.uniform_fraction >= 0.0 && params_.uniform_fraction < 1.0))
     throw InputError("seeded uniform_fraction", "must be in [0, 1), got " + std::to_string(params_.uniform_fraction));
@@ -83,7 +90,9 @@ void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
   SeedingRecord rec;
   const auto scan = first.getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
   if (!scan) throw InputError("first observation", "holds no 2D range scan to relocalize from");
-  rec.ranking = source_(*scan);
+  auto answer = source_(*scan);
+  rec.ranking = std::move(answer.ranking);
+  rec.stage_times = answer.stage_times;
   const auto& hyps = rec.ranking.hypotheses;
   pf_options.adaptiveSampleSize = false;
   if (hyps.empty()) {

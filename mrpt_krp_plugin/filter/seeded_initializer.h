@@ -11,6 +11,7 @@
 #include "mrpt_krp_plugin/filter/particle_initializer.h"
 #include "mrpt_krp_plugin/filter/uniform_initializer.h"
 #include "mrpt_krp_plugin/relocalize/hypothesis_ranking.h"
+#include "mrpt_krp_plugin/relocalize/relocalization_times.h"
 
 namespace krp {
 
@@ -55,6 +56,14 @@ struct SeedingRecord {
   bool fell_back_to_uniform = false;
   /// Thread CPU time from the scan to the drawn prior: relocalization and sampling [s].
   double cpu_s = 0.0;
+  /// Where the relocalization's time went, when the source says (the learned relocalizer).
+  std::optional<RelocalizationTimes> stage_times;
+};
+
+/// A hypothesis source's answer with the time of each of its stages, for reports.
+struct TimedRanking {
+  Ranking ranking;
+  std::optional<RelocalizationTimes> stage_times;  ///< empty: the source does not break its time down
 };
 
 /// `seeded`: the relocalizer's hypotheses become a Gaussian mixture (particles split by
@@ -65,8 +74,11 @@ class SeededInitializer : public ParticleInitializer {
  public:
   /// Turns the first scan into ranked hypotheses (a Relocalizer in the apps, a stub in tests).
   using HypothesisSource = std::function<Ranking(const mrpt::obs::CObservation2DRangeScan&)>;
+  /// The same, saying where its time went (SeedingRecord::stage_times).
+  using TimedHypothesisSource = std::function<TimedRanking(const mrpt::obs::CObservation2DRangeScan&)>;
 
   SeededInitializer(HypothesisSource source, SeededInitParams params = {}, std::string name = "seeded");
+  SeededInitializer(TimedHypothesisSource source, SeededInitParams params = {}, std::string name = "seeded");
   std::string name() const override { return name_; }
   void initialize(mrpt::slam::CMonteCarloLocalization2D& pf, mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf_options,
                   const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) override;
@@ -76,7 +88,7 @@ class SeededInitializer : public ParticleInitializer {
   const std::optional<SeedingRecord>& lastSeeding() const { return last_; }
 
  private:
-  HypothesisSource source_;
+  TimedHypothesisSource source_;
   SeededInitParams params_;
   std::string name_;
   std::optional<SeedingRecord> last_;

@@ -15,6 +15,7 @@
 #include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
 #include "mrpt_krp_plugin/relocalize/keypoint_hypotheses.h"
 #include "mrpt_krp_plugin/relocalize/pose_verifier.h"
+#include "mrpt_krp_plugin/relocalize/relocalization_times.h"
 #include "mrpt_krp_plugin/relocalize/training_map_check.h"
 #include "mrpt_krp_plugin/zones/zone.h"
 
@@ -102,14 +103,6 @@ struct RelocalizerParams {
   /// The same for the maximum range, as a fraction of the manifest's.
   double lidar_range_tolerance = 0.25;
   TrainingMapCheckParams training_map;  ///< when a map is refused as not the one trained on
-};
-
-/// Wall-clock time of each stage of one relocalization [ms].
-struct RelocalizationTimes {
-  double submap_ms = 0, classifier_ms = 0, keypoints_ms = 0, alignment_ms = 0, verification_ms = 0;
-  double zone_search_ms = 0;  ///< the zone search, the scoring of its poses and the re-ranking, when they ran
-  double cross_check_ms = 0;  ///< the same for the cross-check
-  double total_ms = 0;
 };
 
 struct RelocalizationResult {

@@ -173,6 +173,30 @@ TEST(SeededInitializer, RecordsTheCpuTimeFromScanToPrior) {
   }
 }
 
+TEST(SeededInitializer, KeepsTheStageTimesATimedSourceGives) {
+  const auto room = test::asymmetricRoom();
+  Ranking ranking;
+  ranking.hypotheses = {hypothesis(5.5, 2.0, 1.0)};
+  RelocalizationTimes times;
+  times.keypoints_ms = 7.5;
+  times.cross_check_ms = 12.0;
+  times.total_ms = 21.0;
+  const SeededInitializer::TimedHypothesisSource source = [&](const auto&) { return TimedRanking{ranking, times}; };
+  SeededInitializer timed(source);
+  SeededInitializer untimed([&](const auto&) { return ranking; });
+  mrpt::slam::CMonteCarloLocalization2D pf;
+  mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+  timed.initialize(pf, o, room, frameWithScan());
+  ASSERT_TRUE(timed.lastSeeding()->stage_times.has_value());
+  EXPECT_EQ(timed.lastSeeding()->stage_times->keypoints_ms, 7.5);
+  EXPECT_EQ(timed.lastSeeding()->stage_times->cross_check_ms, 12.0);
+  EXPECT_EQ(timed.lastSeeding()->stage_times->total_ms, 21.0);
+  EXPECT_EQ(timed.lastSeeding()->ranking.hypotheses.size(), 1u);
+  untimed.initialize(pf, o, room, frameWithScan());
+  EXPECT_FALSE(untimed.lastSeeding()->stage_times.has_value());
+  EXPECT_EQ(untimed.lastSeeding()->ranking.hypotheses.size(), 1u);
+}
+
 TEST(SeededInitializer, RefusesBadParametersAndFramesWithoutScans) {
   SeededInitParams p;
   p.uniform_fraction = 1.0;
