@@ -97,6 +97,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     std::shared_ptr<const LookAlikeGuard> guard;
     if (std::any_of(cfg.methods.begin(), cfg.methods.end(), methodUsesLookAlikeGuard))
       guard = makeLookAlikeGuard(*map, cfg.method_settings);
+    const auto free_cells = std::make_shared<const FreeCells>(*filter_map.grid, cfg.method_settings.seeded.free_cell_min_freeness);
     std::shared_ptr<const PathAmbiguityCheck> path_check;
     if (cfg.path_ambiguity && cfg.kidnap_at_step == 0) {
       path_check = std::make_shared<PathAmbiguityCheck>(
@@ -109,6 +110,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
       std::string models_identity;
       res.matcher = matcher;
       res.guard = guard;
+      res.free_cells = free_cells;
       if (!seeded_methods.empty()) {
         const auto models = modelsFolder(cfg.method_settings.models_root, cfg.method_settings.models_by_world, w, lidars[li]);
         const auto zones = readZonesYaml(w.zones_path);

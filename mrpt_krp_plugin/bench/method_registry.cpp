@@ -81,13 +81,17 @@ std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, co
       auto result = relocalizer->relocalize(scan);
       return TimedRanking{std::move(result.ranking), result.times};
     };
-    return std::make_shared<SeededInitializer>(source, seeded, name);
+    auto init = std::make_shared<SeededInitializer>(source, seeded, name);
+    init->useFreeCells(resources.free_cells);
+    return init;
   }
   if (methodNeedsMatcher(name)) {
     const auto matcher = resources.matcher;
     if (!matcher) throw InputError("method '" + name + "'", "needs the map's global matcher");
-    return std::make_shared<SeededInitializer>(
+    auto init = std::make_shared<SeededInitializer>(
         [matcher](const mrpt::obs::CObservation2DRangeScan& scan) { return matcher->relocalize(scan); }, seeded, name);
+    init->useFreeCells(resources.free_cells);
+    return init;
   }
   std::string known;
   for (const auto& n : methodNames()) known += (known.empty() ? "" : ", ") + n;

@@ -39,6 +39,8 @@ struct MethodResources {
   std::map<std::string, std::shared_ptr<const Relocalizer>> relocalizers;  ///< by method name
   std::shared_ptr<const MatcherRelocalizer> matcher;
   std::shared_ptr<const LookAlikeGuard> guard;  ///< for the methods whose filter checks its convergence
+  /// The filter map's free cells, for the seeded methods' uniform share (SeededInitializer::useFreeCells).
+  std::shared_ptr<const FreeCells> free_cells;
 };
 
 /// The method names: `uniform-mcl`, `amcl-kld`, `amcl-kld-50k`, `seeded`, `seeded-no-uniform`,

@@ -8,8 +8,8 @@
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/common/thread_cpu_time.h"
+#include "mrpt_krp_plugin/filter/free_cells.h"
 #include "mrpt_krp_plugin/filter/kld_sample_size.h"
-#include "mrpt_krp_plugin/map/grid_image.h"
 
 namespace krp {
 
@@ -18,12 +18,6 @@ namespace {
 constexpr double kDegToRad = M_PI / 180.0;
 
 double clampedStd(double variance, double lo, double hi) { return std::clamp(std::sqrt(std::max(variance, 0.0)), lo, hi); }
-
-std::vector<cv::Point> freeCells(const mrpt::maps::COccupancyGridMap2D& map, double min_freeness) {
-  CellClassParams p;
-  p.max_free_occupancy = 1.0 - min_freeness;
-  return maskedCells(freeMask(map, p));
-}
 
 /// One hypothesis's Gaussian in the prior, and its share of the seeded particles.
 struct Cloud {
@@ -116,7 +110,10 @@ void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
                       clampedStd(h.cov(1, 1), params_.min_std_xy_m, params_.max_std_xy_m),
                       clampedStd(h.cov(2, 2), params_.min_std_yaw_deg * kDegToRad, params_.max_std_yaw_deg * kDegToRad)});
   }
-  const auto cells = freeCells(map, params_.free_cell_min_freeness);
+  std::vector<cv::Point> found;  // only when no FreeCells of this map were given
+  const bool given = free_cells_ && free_cells_->describes(map, params_.free_cell_min_freeness);
+  if (!given) found = freeCellsOf(map, params_.free_cell_min_freeness);
+  const std::vector<cv::Point>& cells = given ? free_cells_->cells() : found;
   // The total counts the uniform share the map asks for; with no free cell it goes to the clouds.
   const auto uniform_count = [&](std::size_t total) {
     return cells.empty() ? std::size_t{0} : static_cast<std::size_t>(std::lround(params_.uniform_fraction * total));

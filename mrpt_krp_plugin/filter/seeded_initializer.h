@@ -6,8 +6,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 
+#include "mrpt_krp_plugin/filter/free_cells.h"
 #include "mrpt_krp_plugin/filter/particle_initializer.h"
 #include "mrpt_krp_plugin/filter/uniform_initializer.h"
 #include "mrpt_krp_plugin/relocalize/hypothesis_ranking.h"
@@ -87,11 +89,19 @@ class SeededInitializer : public ParticleInitializer {
 
   const std::optional<SeedingRecord>& lastSeeding() const { return last_; }
 
+  /// The free cells of the map this initializer will seed on, built once by whoever holds the
+  /// map (FreeCells): the uniform share is drawn from them instead of from the map's cells read
+  /// afresh at each seeding. Cells built from another map, or with another free_cell_min_freeness,
+  /// are not used (the map's cells are read afresh as without them); the particles are the same
+  /// either way.
+  void useFreeCells(std::shared_ptr<const FreeCells> free_cells) { free_cells_ = std::move(free_cells); }
+
  private:
   TimedHypothesisSource source_;
   SeededInitParams params_;
   std::string name_;
   std::optional<SeedingRecord> last_;
+  std::shared_ptr<const FreeCells> free_cells_;
 };
 
 }  // namespace krp

@@ -126,6 +126,8 @@ void RelocalizerNode::useMap(OccupancyMap map) {
       return serialized(scan);
     };
     state->seeding = std::make_shared<SeededInitializer>(seeding_source, params_.seeded());
+    // Each seeding draws its uniform share from these instead of reading the map's cells again.
+    state->seeding->useFreeCells(std::make_shared<const FreeCells>(*grid, params_.seeded().free_cell_min_freeness));
     state->tracker = std::make_shared<OdometryTracker>(grid, state->seeding, params_.mcl(), params_.tracker());
     if (params_.look_alike_guard)
       state->tracker->setLookAlikeGuard(std::make_shared<LookAlikeGuard>(std::make_shared<CorrelativeMatcher>(*grid),
