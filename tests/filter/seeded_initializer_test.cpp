@@ -7,6 +7,7 @@
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/thread_cpu_time.h"
+#include "mrpt_krp_plugin/filter/free_cells.h"
 #include "mrpt_krp_plugin/filter/seeded_initializer.h"
 #include "support/test_maps.h"
 
@@ -195,6 +196,41 @@ TEST(SeededInitializer, KeepsTheStageTimesATimedSourceGives) {
   untimed.initialize(pf, o, room, frameWithScan());
   EXPECT_FALSE(untimed.lastSeeding()->stage_times.has_value());
   EXPECT_EQ(untimed.lastSeeding()->ranking.hypotheses.size(), 1u);
+}
+
+const double kFreeCellMinFreeness = SeededInitParams{}.free_cell_min_freeness;
+
+std::vector<mrpt::math::TPose2D> seededParticles(const mrpt::maps::COccupancyGridMap2D& map,
+                                                 std::shared_ptr<const FreeCells> free) {
+  Ranking ranking;
+  PoseHypothesis h;
+  h.pose = {3.0, 2.0, 0.5};
+  h.cov.setIdentity();
+  h.cov *= 0.01;
+  h.confidence = 1.0;
+  ranking.hypotheses = {h};
+  SeededInitParams p;
+  p.uniform_fraction = 0.3;  // enough uniform draws that a wrong cell list would show
+  SeededInitializer init([&](const auto&) { return ranking; }, p);
+  init.useFreeCells(std::move(free));
+  mrpt::slam::CMonteCarloLocalization2D pf;
+  mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+  init.initialize(pf, o, map, frameWithScan());
+  std::vector<mrpt::math::TPose2D> out;
+  for (const auto& particle : pf.m_particles) out.push_back(particle.d);
+  return out;
+}
+
+TEST(SeededInitializer, DrawsTheSameParticlesFromGivenFreeCellsAsFromTheMap) {
+  const auto room = test::asymmetricRoom();
+  const auto afresh = seededParticles(room, nullptr);
+  ASSERT_FALSE(afresh.empty());
+  EXPECT_EQ(seededParticles(room, std::make_shared<const FreeCells>(room, kFreeCellMinFreeness)), afresh);
+  // Cells of another map are not used: the uniform share is drawn from this map's, as without them.
+  const auto other = test::twinRooms();
+  EXPECT_EQ(seededParticles(room, std::make_shared<const FreeCells>(other, kFreeCellMinFreeness)), afresh);
+  // The maps' cells differ enough that drawing from the wrong ones would show.
+  EXPECT_NE(freeCellsOf(other, kFreeCellMinFreeness), freeCellsOf(room, kFreeCellMinFreeness));
 }
 
 TEST(SeededInitializer, RefusesBadParametersAndFramesWithoutScans) {
