@@ -97,7 +97,11 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
     std::shared_ptr<const LookAlikeGuard> guard;
     if (std::any_of(cfg.methods.begin(), cfg.methods.end(), methodUsesLookAlikeGuard))
       guard = makeLookAlikeGuard(*map, cfg.method_settings);
-    const auto free_cells = std::make_shared<const FreeCells>(*filter_map.grid, cfg.method_settings.seeded.free_cell_min_freeness);
+    // Only the methods that seed from hypotheses (models or the matcher) draw a uniform share over
+    // free cells; the others need no copy of the map's cells.
+    std::shared_ptr<const FreeCells> free_cells;
+    if (!seeded_methods.empty() || need_matcher)
+      free_cells = std::make_shared<const FreeCells>(*filter_map.grid, cfg.method_settings.seeded.free_cell_min_freeness);
     std::shared_ptr<const PathAmbiguityCheck> path_check;
     if (cfg.path_ambiguity && cfg.kidnap_at_step == 0) {
       path_check = std::make_shared<PathAmbiguityCheck>(
