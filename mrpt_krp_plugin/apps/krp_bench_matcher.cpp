@@ -70,7 +70,7 @@ static int run(int argc, char** argv) {
   const std::string out = args.get("out");
   std::filesystem::create_directories(out);
   std::ostringstream md;
-  md << "# Correlative matcher: bounds that stop early\n\nCommand:\n\n```\n" << args.commandLine() << "\n```\n\n"
+  md << "# Correlative matcher: bounds that stop early, wall headings, warm starts\n\nCommand:\n\n```\n" << args.commandLine() << "\n```\n\n"
      << "Map `" << map_path << "` (" << krp::freeAreaM2(*map.grid) << " m^2 free), lidar " << lidar_name << " ("
      << lidar.fov_rad * 180.0 / M_PI << " deg, " << lidar.beams << " beams, " << lidar.max_range_m << " m). Each scan is the first "
      << "of a simulated trial (clutter drawn into the simulation only) and is searched by two matchers built alike "
@@ -90,13 +90,27 @@ static int run(int argc, char** argv) {
      << "at a heading outside the windows. The windows narrowed the headings of "
      << rows.narrowed_scans << " of " << rows.scans << " scans; on those, the true heading lay at most "
      << krp::formatNumber(rows.max_heading_error_deg) << " deg from the nearest window's centre.\n\n"
-     << krp::wallHeadingSpeedMarkdown(rows.wall_headings);
+     << krp::wallHeadingSpeedMarkdown(rows.wall_headings) << "\n## Later solutions started warm\n\n"
+     << "The same scans, bounds stopping early in both: the whole-map search's second solution searched from "
+     << "`min_score`, against searched from the best candidate the first solution's search passed on its way that "
+     << "may still be a solution (`CorrelativeMatcherParams::warm_start_later_solutions`), so that it prunes from "
+     << "that score on; over every heading (the global matcher), then over the wall-heading windows (the zone "
+     << "search's setting). Taking turns at going first. *Scores differ* counts scans whose solutions score "
+     << "differently, one by one: it must be 0. *Places differ* counts those whose solutions stand elsewhere: only "
+     << "where two places score exactly alike, a tie broken in another order.\n\n"
+     << krp::warmStartSpeedMarkdown(rows.warm_start);
   krp::writeFileAtomically(out + "/REPORT.md", md.str());
   std::cout << md.str() << "\nReport: " << out << "/REPORT.md\n";
   for (const auto& r : rows.stop_early)
     if (r.differing > 0) {
       std::cerr << "krp-bench-matcher: the " << r.search << " search answered " << r.differing
                 << " scan(s) differently with bounds that stop early\n";
+      return 1;
+    }
+  for (const auto& r : rows.warm_start)
+    if (r.scores_differing > 0) {
+      std::cerr << "krp-bench-matcher: the " << r.search << " search scored " << r.scores_differing
+                << " scan(s) differently with its later solutions warm-started\n";
       return 1;
     }
   return 0;

@@ -37,6 +37,13 @@ struct Answer {
   bool sameBestAs(const Answer& o) const {
     return solutions.empty() == o.solutions.empty() && sameSolutions(o, std::min<size_t>(1, solutions.size()));
   }
+  /// As many solutions, scoring the same one by one (where they stand aside).
+  bool sameScoresAs(const Answer& o) const {
+    if (solutions.size() != o.solutions.size()) return false;
+    for (size_t i = 0; i < solutions.size(); ++i)
+      if (solutions[i].score != o.solutions[i].score) return false;
+    return true;
+  }
   bool sameSolutions(const Answer& o, size_t count) const {
     for (size_t i = 0; i < count; ++i) {
       const auto &a = solutions[i], &b = o.solutions[i];
@@ -54,14 +61,15 @@ struct Searcher {
   MatchRequest whole_map;  ///< the defaults, with the setting's window
 
   Searcher(const mrpt::maps::COccupancyGridMap2D& map, CorrelativeMatcherParams params, bool stop_early,
-           LookAlikeGuardParams guard_params, double wall_heading_window_deg)
-      : matcher(std::make_shared<CorrelativeMatcher>(map, withStopping(params, stop_early))),
+           LookAlikeGuardParams guard_params, double wall_heading_window_deg, bool warm_start = true)
+      : matcher(std::make_shared<CorrelativeMatcher>(map, withSettings(params, stop_early, warm_start))),
         guard(matcher, withWindow(guard_params, wall_heading_window_deg)) {
     whole_map.wall_heading_window_deg = wall_heading_window_deg;
   }
 
-  static CorrelativeMatcherParams withStopping(CorrelativeMatcherParams p, bool stop_early) {
+  static CorrelativeMatcherParams withSettings(CorrelativeMatcherParams p, bool stop_early, bool warm_start) {
     p.stop_bound_early = stop_early;
+    p.warm_start_later_solutions = warm_start;
     return p;
   }
   static LookAlikeGuardParams withWindow(LookAlikeGuardParams p, double window_deg) {
@@ -98,7 +106,7 @@ struct Tally {
   std::vector<double> baseline_ms, variant_ms, ratio, nodes, baseline_nodes;
   double baseline_s = 0.0, variant_s = 0.0;
   long long nodes_total = 0, stopped_total = 0;
-  int differing = 0, best_differing = 0;
+  int differing = 0, best_differing = 0, scores_differing = 0;
 
   void add(const Answer& baseline, const Answer& variant) {
     baseline_ms.push_back(baseline.cpu_s * kMsPerS);
@@ -112,6 +120,7 @@ struct Tally {
     stopped_total += variant.stopped_early;
     if (same_nodes ? !baseline.sameSearchAs(variant) : !baseline.sameAnswerAs(variant)) ++differing;
     if (!baseline.sameBestAs(variant)) ++best_differing;
+    if (!baseline.sameScoresAs(variant)) ++scores_differing;
   }
   MatcherSpeedRow row(const std::string& search) const {
     MatcherSpeedRow r;
@@ -126,6 +135,7 @@ struct Tally {
     r.share_stopped_early = nodes_total > 0 ? static_cast<double>(stopped_total) / static_cast<double>(nodes_total) : 0.0;
     r.differing = differing;
     r.best_differing = best_differing;
+    r.scores_differing = scores_differing;
     return r;
   }
 };
@@ -154,13 +164,16 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
   const Searcher reading_all(map, params.matcher, false, params.guard, 0.0);
   const Searcher stopping(map, params.matcher, true, params.guard, 0.0);
   const Searcher windowed(map, params.matcher, true, params.guard, params.wall_heading_window_deg);
+  const Searcher cold(map, params.matcher, true, params.guard, 0.0, false);
+  const Searcher cold_windowed(map, params.matcher, true, params.guard, params.wall_heading_window_deg, false);
   const MclParams filter;  // the guard charges see-through beams as the filter does
   const SeeThroughPenalty see_through(map, filter.sensor, filter.see_through);
   TrialParams trial_params = params.trial;
   trial_params.steps = 0;  // the first scan is all a search sees
   MatcherSpeedRows rows;
-  Tally whole_map, look_alike, whole_map_windowed, look_alike_windowed;
+  Tally whole_map, look_alike, whole_map_windowed, look_alike_windowed, warm_every, warm_windowed;
   whole_map_windowed.same_nodes = look_alike_windowed.same_nodes = false;  // fewer headings, fewer nodes
+  warm_every.same_nodes = warm_windowed.same_nodes = false;                // a warm start prunes more
   for (int i = 0; i < params.scans; ++i) {
     const auto trial = generateTrial(map, lidar, trial_params, params.seed + static_cast<uint64_t>(i));
     const auto& scan = *trial.scans.front();
@@ -184,10 +197,15 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
     whole_map_windowed.add(every_whole, windowed_whole);
     const auto [every_check, windowed_check] = sideBySide(stopping, windowed, first, check);
     look_alike_windowed.add(every_check, windowed_check);
+    const auto [cold_whole, warm_whole] = sideBySide(cold, stopping, first, whole);
+    warm_every.add(cold_whole, warm_whole);
+    const auto [cold_windowed_whole, warm_windowed_whole] = sideBySide(cold_windowed, windowed, first, whole);
+    warm_windowed.add(cold_windowed_whole, warm_windowed_whole);
     if (progress) progress();
   }
   rows.stop_early = {whole_map.row("whole map"), look_alike.row("look-alike check")};
   rows.wall_headings = {whole_map_windowed.row("whole map"), look_alike_windowed.row("look-alike check")};
+  rows.warm_start = {warm_every.row("whole map, every heading"), warm_windowed.row("whole map, wall headings")};
   return rows;
 }
 
@@ -215,6 +233,20 @@ std::string wallHeadingSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
        << formatNumber(r.median_ms_variant) << " | " << formatNumber(r.median_ratio) << "x | " << formatNumber(r.total_ratio)
        << "x | " << std::llround(r.median_nodes_baseline) << " | " << std::llround(r.median_nodes) << " | " << r.best_differing
        << " | " << r.differing << " |\n";
+  return md.str();
+}
+
+std::string warmStartSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
+  std::ostringstream md;
+  md << "| search | scans | median ms, each solution from min_score | median ms, later solutions warm-started | "
+        "speed-up (median of per-scan ratios) | speed-up (total) | median nodes, from min_score | median nodes, "
+        "warm-started | scores differ | places differ |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows)
+    md << "| " << r.search << " | " << r.scans << " | " << formatNumber(r.median_ms_baseline) << " | "
+       << formatNumber(r.median_ms_variant) << " | " << formatNumber(r.median_ratio) << "x | " << formatNumber(r.total_ratio)
+       << "x | " << std::llround(r.median_nodes_baseline) << " | " << std::llround(r.median_nodes) << " | "
+       << r.scores_differing << " | " << r.differing << " |\n";
   return md.str();
 }
 

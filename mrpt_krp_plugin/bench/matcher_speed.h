@@ -18,7 +18,8 @@ namespace krp {
 /// What krp-bench-matcher measures: the correlative matcher's two kinds of search on simulated
 /// first scans, each run with CorrelativeMatcherParams::stop_bound_early off and on, and (bounds
 /// stopping early) over every heading and over the wall-heading windows
-/// (MatchRequest::wall_heading_window_deg), side by side on the same scan (alternating which goes
+/// (MatchRequest::wall_heading_window_deg), and with the later solutions of a search started cold
+/// and warm (CorrelativeMatcherParams::warm_start_later_solutions), side by side on the same scan (alternating which goes
 /// first), so that the ratios survive a noisy machine.
 struct MatcherSpeedParams {
   int scans = 30;     ///< first scans of simulated trials, one per trial seed
@@ -45,6 +46,7 @@ struct MatcherSpeedRow {
   double share_stopped_early = 0.0;  ///< of all the variant's nodes, those whose bound stopped early
   int differing = 0;                 ///< scans whose answer or node count differed
   int best_differing = 0;            ///< scans whose best answer differed
+  int scores_differing = 0;          ///< scans whose solutions' scores differed, one by one
 };
 
 /// Both comparisons, row for row (whole map, then look-alike check).
@@ -54,6 +56,10 @@ struct MatcherSpeedRows {
   /// Every heading (baseline) against the wall-heading windows, bounds stopping early in both.
   /// Differing counts scans answered differently; the node counts differ by design.
   std::vector<MatcherSpeedRow> wall_headings;
+  /// Each of the whole-map search's solutions from min_score (baseline) against the later ones
+  /// warm-started (CorrelativeMatcherParams::warm_start_later_solutions), over every heading, then
+  /// over the wall-heading windows. Scores must not differ; places only where two tie.
+  std::vector<MatcherSpeedRow> warm_start;
   /// Scans whose headings the windows narrowed (both wall directions clear), of all scans.
   int narrowed_scans = 0, scans = 0;
   /// Over the narrowed scans: the true heading's largest distance to the nearest window centre
@@ -70,5 +76,7 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
 std::string matcherSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows);
 /// The wall-heading rows as a Markdown table.
 std::string wallHeadingSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows);
+/// The warm-start rows as a Markdown table.
+std::string warmStartSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows);
 
 }  // namespace krp

@@ -220,9 +220,18 @@ std::vector<MatchSolution> CorrelativeMatcher::match(const mrpt::obs::CObservati
 
   const double bar = request.min_score.value_or(params_.min_score);
   auto excluded = request.excluded;  // and every solution found, as each search ends
+  // Where look-alikes abound, an earlier search passes through some on its way to its best: a
+  // later one that starts from the best of those still allowed prunes most of its tree at once.
+  std::vector<Improvement> passed;
   for (int sol = 0; sol < solutions; ++sol) {
     const Candidate candidate = [&](int cx, int cy) { return isCandidate(cx, cy, region_sum, excluded); };
-    const auto best = searchDepthFirst(rotations, bar, in_region, candidate);
+    std::optional<MatchSolution> start;
+    for (const auto& p : passed)
+      if ((!start || p.solution.score > start->score) && candidate(p.cx, p.cy)) start = p.solution;
+    const bool warm = params_.warm_start_later_solutions && sol + 1 < solutions;
+    const auto best = searchDepthFirst(rotations, bar, in_region, candidate,
+                                       params_.warm_start_later_solutions ? start : std::nullopt,
+                                       warm ? &passed : nullptr);
     if (!best) break;
     out.push_back(*best);
     excluded.emplace_back(best->pose.x, best->pose.y);
@@ -283,10 +292,11 @@ size_t CorrelativeMatcher::children(const Rotation& rot, const Node& n, const Ta
 }
 
 std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vector<Rotation>& rotations, double bar,
-                                                                  const InRegion& in_region,
-                                                                  const Candidate& candidate) const {
-  MatchSolution best{{}, bar};
-  bool found = false;
+                                                                  const InRegion& in_region, const Candidate& candidate,
+                                                                  const std::optional<MatchSolution>& start,
+                                                                  std::vector<Improvement>* improvements) const {
+  MatchSolution best = start.value_or(MatchSolution{{}, bar});
+  bool found = start.has_value();
   const auto higher = [](const Node& a, const Node& b) { return a.bound > b.bound; };
   // The tail sums of the roots, and of the children of the node being expanded at each level:
   // depth-first, one node per level is expanded at a time.
@@ -305,6 +315,7 @@ std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vec
         if (!candidate(n.cx, n.cy)) return;
         best = {poseOf(n.cx, n.cy, rot.phi), n.bound};
         found = true;
+        if (improvements) improvements->push_back({best, n.cx, n.cy});
         return;
       }
       std::array<Node, 4> below;

@@ -41,6 +41,12 @@ struct CorrelativeMatcherParams {
   /// return scores above 1). The answers and the nodes scored are the same either way; false
   /// reads every return, for the side-by-side benchmark (krp-bench-matcher).
   bool stop_bound_early = true;
+  /// A search for several solutions starts each one after the first from the best candidate an
+  /// earlier one passed on its way that may still be a solution, instead of from min_score: it
+  /// prunes from that score on. The answers' scores are the same either way; their poses too but
+  /// where two places score exactly alike. false starts each from min_score, for the side-by-side
+  /// benchmark (krp-bench-matcher).
+  bool warm_start_later_solutions = true;
   /// How the map's and a scan's wall directions are measured, for a request's
   /// wall_heading_window_deg.
   WallAxesParams wall_axes;
@@ -185,10 +191,19 @@ class CorrelativeMatcher {
   /// does, written to `out`; how many.
   size_t children(const Rotation& rot, const Node& n, const TailSums& n_tails, const InRegion& in_region, double cutoff,
                   TailSums& tails, std::array<Node, 4>& out) const;
+  /// A candidate a depth-first search took as its best at some point, with its cell.
+  struct Improvement {
+    MatchSolution solution;
+    int cx, cy;
+  };
   /// The best candidate scoring above `bar`: depth-first, best child first, pruned by the best
-  /// found so far (fast when nothing is charged beyond the endpoint score).
+  /// found so far (fast when nothing is charged beyond the endpoint score). `start`: a candidate
+  /// known to score above `bar`, the best until a better one is found, so that the search prunes
+  /// from its score on. Every candidate taken as the best is appended to `improvements` (if given).
   std::optional<MatchSolution> searchDepthFirst(const std::vector<Rotation>& rotations, double bar,
-                                                const InRegion& in_region, const Candidate& candidate) const;
+                                                const InRegion& in_region, const Candidate& candidate,
+                                                const std::optional<MatchSolution>& start = std::nullopt,
+                                                std::vector<Improvement>* improvements = nullptr) const;
   /// A cell a solution may stand on: free, in the region (regionSum's; empty: anywhere) and at
   /// least exclusion_m from each of `excluded`.
   bool isCandidate(int cx, int cy, const cv::Mat& region_sum, const std::vector<mrpt::math::TPoint2D>& excluded) const;

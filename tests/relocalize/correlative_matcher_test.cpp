@@ -67,6 +67,38 @@ TEST(CorrelativeMatcher, BranchAndBoundFindsWhatExhaustiveSearchFinds) {
   EXPECT_LT(b.lastNodesScored(), a.lastNodesScored() / 5) << "the bounds should prune most of the search";
 }
 
+// A search for several solutions starts each after the first from the best candidate an earlier
+// one passed that is still allowed: the same places and scores as starting each from min_score,
+// for fewer nodes where the earlier searches passed look-alikes (two rooms alike, each with its
+// own turned twins).
+TEST(CorrelativeMatcher, LaterSolutionsStartedWarmAreTheSameForFewerNodes) {
+  const auto map = test::twinRooms();
+  CorrelativeMatcherParams cold_params;
+  cold_params.solutions = 4;
+  cold_params.warm_start_later_solutions = false;
+  CorrelativeMatcherParams warm_params = cold_params;
+  warm_params.warm_start_later_solutions = true;
+  const CorrelativeMatcher cold(map, cold_params), warm(map, warm_params);
+  long long cold_nodes = 0, warm_nodes = 0;
+  for (const auto& pose : {mrpt::poses::CPose2D(2.0, 2.0, 0.4), mrpt::poses::CPose2D(5.5, 4.0, -1.9),
+                           mrpt::poses::CPose2D(16.2, 1.5, 2.8)}) {
+    const auto scan = scanAt(map, pose);
+    const auto a = cold.match(*scan);
+    cold_nodes += cold.lastNodesScored();
+    const auto b = warm.match(*scan);
+    warm_nodes += warm.lastNodesScored();
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_GE(a.size(), 2u) << "the twin room holds a look-alike";
+    for (size_t i = 0; i < a.size(); ++i) {
+      EXPECT_DOUBLE_EQ(a[i].score, b[i].score) << i;
+      EXPECT_DOUBLE_EQ(a[i].pose.x, b[i].pose.x) << i;
+      EXPECT_DOUBLE_EQ(a[i].pose.y, b[i].pose.y) << i;
+      EXPECT_DOUBLE_EQ(a[i].pose.phi, b[i].pose.phi) << i;
+    }
+  }
+  EXPECT_LT(warm_nodes, cold_nodes);
+}
+
 // Where walls meet at right angles, the headings that line the scan's walls up with the map's
 // hold the answer: the narrowed search finds the pose the full turn finds, for a fraction of the
 // nodes. A map without a clear wall direction keeps every heading.
