@@ -2,7 +2,9 @@
 # Regenerates reports/matcher_speed (issue 4): the correlative matcher's bounds that stop reading
 # returns once a node cannot win, against bounds that read every return, side by side on the same
 # simulated first scans (krp-bench-matcher; both must answer alike); then every heading against
-# the wall-heading windows (MatchRequest::wall_heading_window_deg, 5 deg), on the same scans. Worlds office_two_zone,
+# the wall-heading windows (MatchRequest::wall_heading_window_deg, 5 deg), on the same scans; then
+# the whole-map search's second solution searched from min_score against warm-started
+# (CorrelativeMatcherParams::warm_start_later_solutions), on the same scans. Worlds office_two_zone,
 # warehouse and large_floor with their default lidars, and, when ../shared/data holds it, the map
 # of the Freiburg 101 log (its odd scans, as scripts/check_freiburg.sh builds it) with the log's
 # SICK LMS profile (third-party data: only the numbers go into the report); the cluttered office
