@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <utility>
@@ -222,32 +223,38 @@ std::string matcherSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
   return md.str();
 }
 
-std::string wallHeadingSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
+namespace {
+/// Rows compared in times and node counts, their last two columns the answers that differ:
+/// `headers` names the columns after "search | scans", `counts` gives a row's two counts.
+std::string comparisonMarkdown(const std::vector<MatcherSpeedRow>& rows, const std::string& headers,
+                               const std::function<std::pair<int, int>(const MatcherSpeedRow&)>& counts) {
   std::ostringstream md;
-  md << "| search | scans | median ms, every heading | median ms, wall headings | speed-up (median of per-scan "
-        "ratios) | speed-up (total) | median nodes, every heading | median nodes, wall headings | best answer "
-        "differs | any answer differs |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const auto& r : rows)
+  md << "| search | scans | " << headers << " |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    const auto [first, second] = counts(r);
     md << "| " << r.search << " | " << r.scans << " | " << formatNumber(r.median_ms_baseline) << " | "
        << formatNumber(r.median_ms_variant) << " | " << formatNumber(r.median_ratio) << "x | " << formatNumber(r.total_ratio)
-       << "x | " << std::llround(r.median_nodes_baseline) << " | " << std::llround(r.median_nodes) << " | " << r.best_differing
-       << " | " << r.differing << " |\n";
+       << "x | " << std::llround(r.median_nodes_baseline) << " | " << std::llround(r.median_nodes) << " | " << first
+       << " | " << second << " |\n";
+  }
   return md.str();
+}
+}  // namespace
+
+std::string wallHeadingSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
+  return comparisonMarkdown(rows,
+                            "median ms, every heading | median ms, wall headings | speed-up (median of per-scan "
+                            "ratios) | speed-up (total) | median nodes, every heading | median nodes, wall headings | "
+                            "best answer differs | any answer differs",
+                            [](const MatcherSpeedRow& r) { return std::pair{r.best_differing, r.differing}; });
 }
 
 std::string warmStartSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
-  std::ostringstream md;
-  md << "| search | scans | median ms, each solution from min_score | median ms, later solutions warm-started | "
-        "speed-up (median of per-scan ratios) | speed-up (total) | median nodes, from min_score | median nodes, "
-        "warm-started | scores differ | places differ |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const auto& r : rows)
-    md << "| " << r.search << " | " << r.scans << " | " << formatNumber(r.median_ms_baseline) << " | "
-       << formatNumber(r.median_ms_variant) << " | " << formatNumber(r.median_ratio) << "x | " << formatNumber(r.total_ratio)
-       << "x | " << std::llround(r.median_nodes_baseline) << " | " << std::llround(r.median_nodes) << " | "
-       << r.scores_differing << " | " << r.differing << " |\n";
-  return md.str();
+  return comparisonMarkdown(rows,
+                            "median ms, each solution from min_score | median ms, later solutions warm-started | "
+                            "speed-up (median of per-scan ratios) | speed-up (total) | median nodes, from min_score | "
+                            "median nodes, warm-started | scores differ | places differ",
+                            [](const MatcherSpeedRow& r) { return std::pair{r.scores_differing, r.differing}; });
 }
 
 }  // namespace krp
