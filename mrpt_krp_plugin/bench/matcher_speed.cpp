@@ -54,8 +54,8 @@ struct Answer {
   }
 };
 
-/// One setting of stop_bound_early and of the wall-heading window: its matcher and the guard
-/// searching with it.
+/// One setting of stop_bound_early, of the wall-heading window and of warm_start_later_solutions:
+/// its matcher and the guard searching with it.
 struct Searcher {
   std::shared_ptr<const CorrelativeMatcher> matcher;
   LookAlikeGuard guard;
