@@ -6,8 +6,8 @@
 #                    cross-check, filter with the look-alike guard), seeded-no-uniform,
 #                    seeded-no-cross-check, seeded-no-guard, seeded-keypoints-only (the models
 #                    alone), global-matcher (~6 min on 2 idle cores);
-#   warehouse:       30 trials, the same methods but amcl-kld-50k (reports/baseline/warehouse has
-#                    it over 40 updates); uniform-mcl starts with 92,537 particles (~5 min).
+#   warehouse:       100 trials, the same methods but amcl-kld-50k (reports/baseline/warehouse has
+#                    it over 40 updates); uniform-mcl starts with 92,537 particles (~30 min).
 #   large_floor:     (only when asked) 30 trials, uniform-mcl (200,000 particles, the uniform
 #                    initializer's cap), amcl-kld, seeded, seeded-keypoints-only and global-matcher,
 #                    into reports/relocalization/large_floor (~15 min).
@@ -31,7 +31,7 @@ if [[ "$which" == all || "$which" == office ]]; then
     --out reports/relocalization/office_two_zone "$@"
 fi
 if [[ "$which" == all || "$which" == warehouse ]]; then
-  "$bench" --worlds warehouse "${common[@]}" --trials 30 \
+  "$bench" --worlds warehouse "${common[@]}" --trials 100 \
     --methods uniform-mcl,amcl-kld,seeded,seeded-no-uniform,seeded-no-cross-check,seeded-no-guard,seeded-keypoints-only,global-matcher \
     --out reports/relocalization/warehouse "$@"
 fi
