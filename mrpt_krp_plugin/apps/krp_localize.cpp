@@ -314,6 +314,8 @@ static int run(int argc, char** argv) {
     const bool zone_search = !s["zones"].empty() && (krp::methodUsesZoneSearch(s["method"]) || !krp::methodNeedsModels(s["method"]));
     relocalizer = zone_search ? std::make_shared<krp::Relocalizer>(s["models"], *map.grid, rp, krp::readZonesYaml(s["zones"]))
                               : std::make_shared<krp::Relocalizer>(s["models"], *map.grid, rp);
+    if (const auto missing = relocalizer->zoneSearchMissing(); !missing.empty())
+      std::cerr << "krp-localize: warning: " << missing << " (--zones)\n";
   }
   std::vector<mrpt::math::TPose2D> truth;
   const auto steps = readSteps(s, &truth);

@@ -29,7 +29,10 @@ HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupan
                            ? std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned)
                            : std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned,
                                                                  readZonesYaml(params.zones_file));
-    if (description) *description = "learned, " + modelsIdentity(relocalizer->manifest());
+    if (description) {
+      *description = "learned, " + modelsIdentity(relocalizer->manifest());
+      if (const auto missing = relocalizer->zoneSearchMissing(); !missing.empty()) *description += "; warning: " + missing;
+    }
     // The map is captured too: the relocalizer's verifier was built from it.
     return [relocalizer, map](const mrpt::obs::CObservation2DRangeScan& scan) {
       return relocalizer->relocalize(scan).ranking;

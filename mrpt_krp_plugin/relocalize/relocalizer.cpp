@@ -83,6 +83,14 @@ void Relocalizer::enableZoneSearch(const mrpt::maps::COccupancyGridMap2D& map, c
   for (const auto& zone : zonesInManifestOrder(manifest_, zones, "zones")) zone_regions_.push_back(matcher_->regionOf({zone}));
 }
 
+std::string Relocalizer::zoneSearchMissing() const {
+  if (hasZoneSearch() || params_.zone_search.zones <= 0) return "";
+  return "the models in " + manifest_.folder +
+         " name no zone outlines and none were given, so the zone search is off: a scan whose keypoints give no "
+         "credible pose gets no hypothesis. Give the zones.yaml of world '" +
+         manifest_.world + "' that the models were trained on";
+}
+
 std::vector<PoseHypothesis> Relocalizer::zoneSearch(const mrpt::obs::CObservation2DRangeScan& scan,
                                                     const std::vector<float>& zone_probabilities) const {
   std::vector<PoseHypothesis> found;

@@ -145,6 +145,12 @@ class Relocalizer {
   const ModelManifest& manifest() const { return manifest_; }
   const PoseVerifier& verifier() const { return verifier_; }
   bool hasZoneSearch() const { return !zone_regions_.empty(); }
+  /// Why the zone search is off although the parameters ask for it: the manifest names no zone
+  /// outlines (models trained before krp-train-map wrote them beside the models) and none were
+  /// given. Empty when the zone search is on, or asked off. For a warning: without it a scan
+  /// whose keypoints give no credible pose gets no hypothesis, where krp-bench's `seeded`, which
+  /// passes each world's zones, would have searched the classifier's zone.
+  std::string zoneSearchMissing() const;
 
  private:
   /// Both public constructors: the zones given, else those the manifest names, else none; one

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/inference/model_manifest.h"
@@ -44,6 +48,18 @@ TEST(HypothesisSource, DescribesWhatRuns) {
   makeHypothesisSource(office.grid, p, &description);
   EXPECT_EQ(description, "learned, " + modelsIdentity(readModelManifest(p.models_dir)));
   EXPECT_NE(description.find("classifier sha256 "), std::string::npos) << description;
+  // Models without zone outlines, and no zones given: the status line warns that the zone
+  // search is off.
+  const std::filesystem::path bare = test::tempDir("source_models_without_zones");
+  std::filesystem::copy(p.models_dir, bare, std::filesystem::copy_options::recursive);
+  std::filesystem::remove(bare / "zones.yaml");
+  nlohmann::json manifest = nlohmann::json::parse(std::ifstream(bare / "manifest.json"));
+  manifest.erase("zone_outlines");
+  std::ofstream(bare / "manifest.json") << manifest.dump();
+  p.models_dir = bare.string();
+  makeHypothesisSource(office.grid, p, &description);
+  EXPECT_NE(description.find("; warning: the models in "), std::string::npos) << description;
+  EXPECT_NE(description.find("zone search is off"), std::string::npos) << description;
 }
 
 TEST(HypothesisSource, LearnedWithoutModelsSaysWhatIsMissing) {

@@ -123,6 +123,23 @@ TEST(Relocalizer, ReadsTheZonesBesideTheModels) {
   EXPECT_FALSE(Relocalizer(dir.string(), *map.grid, off).hasZoneSearch());
 }
 
+// Models without zone outlines (models/warehouse was trained before krp-train-map kept them)
+// lose the zone search unless the user gives the zones: the relocalizer says so, naming the
+// world whose zones.yaml it needs, and says nothing when the search is on or asked off.
+TEST(Relocalizer, SaysWhyTheZoneSearchIsOff) {
+  const auto world = readWorld(kWorld);
+  const auto map = loadOccupancyMap(world.map_path);
+  const auto bare = modelsWithoutZoneOutlines("zone_search_missing");
+  const std::string missing = Relocalizer(bare, *map.grid).zoneSearchMissing();
+  EXPECT_NE(missing.find("no zone outlines"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("zones.yaml of world 'office_two_zone'"), std::string::npos) << missing;
+  EXPECT_EQ(Relocalizer(bare, *map.grid, {}, readZonesYaml(world.zones_path)).zoneSearchMissing(), "");
+  RelocalizerParams off;
+  off.zone_search.zones = 0;
+  EXPECT_EQ(Relocalizer(bare, *map.grid, off).zoneSearchMissing(), "");
+  EXPECT_EQ(Relocalizer(kModels, *map.grid).zoneSearchMissing(), "");
+}
+
 // With the keypoints switched off (no zone's detections used) only the zone search can answer:
 // it runs, stays in the classifier's zone and finds the pose there.
 TEST(Relocalizer, ZoneSearchAnswersWhenTheKeypointsGiveNothing) {
