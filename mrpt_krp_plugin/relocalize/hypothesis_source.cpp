@@ -20,7 +20,9 @@ void useMinLocalizedFitFraction(double fraction, RelocalizerParams& learned, Mat
 std::vector<std::string> hypothesisSourceBackends() { return {"learned", "global-matcher"}; }
 
 HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
-                                      const HypothesisSourceParams& params, std::string* description) {
+                                      const HypothesisSourceParams& params, std::string* description,
+                                      std::string* warning) {
+  if (warning) warning->clear();
   if (!map) throw InputError("hypothesis source", "no map");
   if (params.backend == "learned") {
     if (params.models_dir.empty())
@@ -29,10 +31,8 @@ HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupan
                            ? std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned)
                            : std::make_shared<const Relocalizer>(params.models_dir, *map, params.learned,
                                                                  readZonesYaml(params.zones_file));
-    if (description) {
-      *description = "learned, " + modelsIdentity(relocalizer->manifest());
-      if (const auto missing = relocalizer->zoneSearchMissing(); !missing.empty()) *description += "; warning: " + missing;
-    }
+    if (description) *description = "learned, " + modelsIdentity(relocalizer->manifest());
+    if (warning) *warning = relocalizer->zoneSearchMissing();
     // The map is captured too: the relocalizer's verifier was built from it.
     return [relocalizer, map](const mrpt::obs::CObservation2DRangeScan& scan) {
       return relocalizer->relocalize(scan).ranking;

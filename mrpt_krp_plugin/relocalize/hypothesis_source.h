@@ -46,10 +46,11 @@ std::vector<std::string> hypothesisSourceBackends();
 /// Builds the chosen backend for `map` (loading models, precomputing search grids: seconds on
 /// a large map). InputError for an unknown backend, a missing models_dir for `learned`, or
 /// models that do not fit the map. `description`, when given, receives what runs: `learned,
-/// <modelsIdentity>` (the folder and its models' sha256) or `global-matcher`, for a status line;
-/// `learned` adds "; warning: " and Relocalizer::zoneSearchMissing() when the zone search is off
-/// for want of zones.
+/// <modelsIdentity>` (the folder and its models' sha256) or `global-matcher`, for a status line.
+/// `warning`, when given, receives what the user should hear about the source built, or empty:
+/// for `learned`, Relocalizer::zoneSearchMissing() (the zone search off for want of zones).
 HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,
-                                      const HypothesisSourceParams& params, std::string* description = nullptr);
+                                      const HypothesisSourceParams& params, std::string* description = nullptr,
+                                      std::string* warning = nullptr);
 
 }  // namespace krp

@@ -95,8 +95,8 @@ void RelocalizerNode::useMap(OccupancyMap map) {
   auto state = std::make_shared<MapState>();
   state->map = std::make_shared<const OccupancyMap>(std::move(map));
   const std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> grid = state->map->grid;
-  std::string backend;
-  const HypothesisSource raw = makeHypothesisSource(grid, params_.hypothesisSource(), &backend);
+  std::string backend, warning;
+  const HypothesisSource raw = makeHypothesisSource(grid, params_.hypothesisSource(), &backend, &warning);
   // The relocalizer and the tracker's initializer share one source: one call at a time.
   auto source_mutex = std::make_shared<std::mutex>();
   const HypothesisSource serialized = [raw, source_mutex](const mrpt::obs::CObservation2DRangeScan& scan) {
@@ -136,6 +136,7 @@ void RelocalizerNode::useMap(OccupancyMap map) {
   std::ostringstream s;
   s << "map in use: " << state->map->source << " (" << grid->getSizeX() << " x " << grid->getSizeY()
     << " cells); backend " << backend;
+  if (!warning.empty()) s << "; " << warning << " (zones_file)";
   {
     std::lock_guard<std::mutex> lock(mutex_);
     map_state_ = state;
@@ -144,7 +145,7 @@ void RelocalizerNode::useMap(OccupancyMap map) {
     // A new map invalidates any pose: find it again on it.
     relocalization_pending_ = relocalization_pending_ || params_.relocalize_on_startup;
   }
-  report(s.str(), false);
+  report(s.str(), !warning.empty());
 }
 
 std::shared_ptr<RelocalizerNode::MapState> RelocalizerNode::mapState() {

@@ -45,11 +45,12 @@ TEST(HypothesisSource, DescribesWhatRuns) {
   p.backend = "learned";
   p.models_dir = std::string(KRP_SOURCE_DIR) + "/models/office_two_zone";
   const auto office = loadOccupancyMap(std::string(KRP_SOURCE_DIR) + "/sim_worlds/office_two_zone/office_two_zone.yaml");
-  makeHypothesisSource(office.grid, p, &description);
+  std::string warning = "left from before";
+  makeHypothesisSource(office.grid, p, &description, &warning);
   EXPECT_EQ(description, "learned, " + modelsIdentity(readModelManifest(p.models_dir)));
+  EXPECT_EQ(warning, "");
   EXPECT_NE(description.find("classifier sha256 "), std::string::npos) << description;
-  // Models without zone outlines, and no zones given: the status line warns that the zone
-  // search is off.
+  // Models without zone outlines, and no zones given: a warning that the zone search is off.
   const std::filesystem::path bare = test::tempDir("source_models_without_zones");
   std::filesystem::copy(p.models_dir, bare, std::filesystem::copy_options::recursive);
   std::filesystem::remove(bare / "zones.yaml");
@@ -57,9 +58,10 @@ TEST(HypothesisSource, DescribesWhatRuns) {
   manifest.erase("zone_outlines");
   std::ofstream(bare / "manifest.json") << manifest.dump();
   p.models_dir = bare.string();
-  makeHypothesisSource(office.grid, p, &description);
-  EXPECT_NE(description.find("; warning: the models in "), std::string::npos) << description;
-  EXPECT_NE(description.find("zone search is off"), std::string::npos) << description;
+  makeHypothesisSource(office.grid, p, &description, &warning);
+  EXPECT_EQ(description, "learned, " + modelsIdentity(readModelManifest(p.models_dir)));
+  EXPECT_NE(warning.find("the models in " + bare.string()), std::string::npos) << warning;
+  EXPECT_NE(warning.find("zone search is off"), std::string::npos) << warning;
 }
 
 TEST(HypothesisSource, LearnedWithoutModelsSaysWhatIsMissing) {
