@@ -7,7 +7,7 @@
 #                    seeded-no-cross-check, seeded-no-guard, seeded-keypoints-only (the models
 #                    alone), global-matcher (~6 min on 2 idle cores);
 #   warehouse:       100 trials, the same methods but amcl-kld-50k (reports/baseline/warehouse has
-#                    it over 40 updates); uniform-mcl starts with 92,537 particles (~30 min).
+#                    it over 40 updates); uniform-mcl starts with 92,537 particles (~26 min).
 #   large_floor:     (only when asked) 30 trials, uniform-mcl (200,000 particles, the uniform
 #                    initializer's cap), amcl-kld, seeded, seeded-keypoints-only and global-matcher,
 #                    into reports/relocalization/large_floor (~15 min).
