@@ -1,10 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
-
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/inference/model_manifest.h"
@@ -12,6 +8,7 @@
 #include "mrpt_krp_plugin/relocalize/hypothesis_source.h"
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
 #include "mrpt_krp_plugin/sim/scan_simulator.h"
+#include "support/models_without_zone_outlines.h"
 #include "support/test_maps.h"
 
 namespace krp {
@@ -51,16 +48,10 @@ TEST(HypothesisSource, DescribesWhatRuns) {
   EXPECT_EQ(warning, "");
   EXPECT_NE(description.find("classifier sha256 "), std::string::npos) << description;
   // Models without zone outlines, and no zones given: a warning that the zone search is off.
-  const std::filesystem::path bare = test::tempDir("source_models_without_zones");
-  std::filesystem::copy(p.models_dir, bare, std::filesystem::copy_options::recursive);
-  std::filesystem::remove(bare / "zones.yaml");
-  nlohmann::json manifest = nlohmann::json::parse(std::ifstream(bare / "manifest.json"));
-  manifest.erase("zone_outlines");
-  std::ofstream(bare / "manifest.json") << manifest.dump();
-  p.models_dir = bare.string();
+  p.models_dir = test::modelsWithoutZoneOutlines("source_models_without_zones");
   makeHypothesisSource(office.grid, p, &description, &warning);
   EXPECT_EQ(description, "learned, " + modelsIdentity(readModelManifest(p.models_dir)));
-  EXPECT_NE(warning.find("the models in " + bare.string()), std::string::npos) << warning;
+  EXPECT_NE(warning.find("the models in " + p.models_dir), std::string::npos) << warning;
   EXPECT_NE(warning.find("zone search is off"), std::string::npos) << warning;
 }
 

@@ -9,6 +9,7 @@
 
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "support/input_error_message.h"
+#include "support/models_without_zone_outlines.h"
 #include "support/test_maps.h"
 #include "mrpt_krp_plugin/common/random.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
@@ -28,17 +29,7 @@ const std::string kWorld = std::string(KRP_SOURCE_DIR) + "/sim_worlds/office_two
 
 using test::inputErrorMessage;
 
-// A copy of the shipped models as krp-train-map wrote them before it kept the zones beside the
-// models: no zones.yaml and none named in the manifest, so the zone search needs the user's zones.
-std::string modelsWithoutZoneOutlines(const std::string& name) {
-  const std::filesystem::path dir = test::tempDir(name);
-  std::filesystem::copy(kModels, dir, std::filesystem::copy_options::recursive);
-  std::filesystem::remove(dir / "zones.yaml");
-  nlohmann::json manifest = nlohmann::json::parse(std::ifstream(dir / "manifest.json"));
-  manifest.erase("zone_outlines");
-  std::ofstream(dir / "manifest.json") << manifest.dump();
-  return dir.string();
-}
+using test::modelsWithoutZoneOutlines;
 
 // The shipped office models were trained for omni_12m (360 deg, 12 m) on a 0.05 m map.
 TEST(Relocalizer, RefusesScansFromAnotherLidar) {
