@@ -3,7 +3,8 @@
 # script that exists, every bench script that reads the shipped models (models/office_two_zone,
 # models/warehouse, or --models-root models) is listed, and an unknown world or argument is
 # refused.
-# bench_other_lidars.sh reads models/office_two_zone_lds01, a folder of its own.
+# bench_other_lidars.sh reads models/office_two_zone_lds01 and models/office_two_zone_safety_270,
+# folders of their own.
 set -euo pipefail
 root="${1:?usage: $0 REPO_ROOT}"
 script="$root/scripts/rerun_model_reports.sh"
