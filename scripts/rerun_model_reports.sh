@@ -39,6 +39,7 @@ if for_world office_two_zone; then
   add scripts/bench_unseen_zone.sh
   add scripts/bench_watch_rejected.sh
   add scripts/bench_spread_count.sh office
+  add scripts/bench_later_scans.sh office
   add KRP_SKIP_SETUP=1 scripts/krp-recheck-models --models models/office_two_zone --seed 2
   add KRP_SKIP_SETUP=1 scripts/krp-recheck-models --models models/office_two_zone --seed 3
 fi
@@ -47,6 +48,7 @@ if for_world warehouse; then
   add scripts/bench_relocalization.sh warehouse-40
   add scripts/bench_thesis_tables.sh warehouse
   add scripts/bench_spread_count.sh warehouse
+  add scripts/bench_later_scans.sh warehouse
   add KRP_SKIP_SETUP=1 scripts/krp-recheck-models --models models/warehouse --seed 2
   add KRP_SKIP_SETUP=1 scripts/krp-recheck-models --models models/warehouse --seed 3
 fi

@@ -221,7 +221,7 @@ static int run(int argc, char** argv) {
                 {"odom-frame", "FRAME", "--bag: odometry frame", "odom"},
                 {"base-frame", "FRAME", "--bag: robot frame", "base_link"},
                 {"method", "NAME", "uniform-mcl, amcl-kld, amcl-kld-50k, seeded, seeded-no-uniform, seeded-no-cross-check, seeded-no-guard, "
-                 "seeded-keypoints-only, seeded-spread-count, global-matcher or global-matcher-guarded", "amcl-kld"},
+                 "seeded-keypoints-only, seeded-spread-count, seeded-later-scans, global-matcher or global-matcher-guarded", "amcl-kld"},
                 {"models", "DIR", "seeded / single scan: krp-train-map's model folder (manifest.json)", ""},
                 {"zones", "FILE", "seeded / single scan: the zones.yaml the models were trained on (default: the one "
                  "beside the models when their manifest names it); when the keypoints give no credible pose, the "
@@ -345,6 +345,7 @@ static int run(int argc, char** argv) {
   krp::MclParams mp;
   mp.seed = filter_seed;
   mp.see_through.enabled = krp::methodUsesSeeThrough(s["method"]);
+  mp.later_scans.enabled = krp::methodSeedsFromLaterScans(s["method"]);
   krp::MclLocalizer loc(map.grid, init, mp);
   if (krp::methodUsesLookAlikeGuard(s["method"])) loc.setLookAlikeGuard(krp::makeLookAlikeGuard(*map.grid, ms));
 

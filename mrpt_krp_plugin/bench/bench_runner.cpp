@@ -161,6 +161,7 @@ std::vector<TrialRecord> runBench(const BenchConfig& cfg, std::ostream& log) {
         mp.seed = static_cast<uint32_t>(filter_seed);
         if (cfg.kidnap_at_step > 0) mp.kidnap.enabled = true;
         if (!methodUsesSeeThrough(method)) mp.see_through.enabled = false;
+        mp.later_scans.enabled = methodSeedsFromLaterScans(method);
         MethodSettings ms = cfg.method_settings;
         ms.seeded.seed = filter_seed;
         const auto init = makeInitializer(method, ms, job.resources);

@@ -9,8 +9,8 @@ namespace krp {
 
 std::vector<std::string> methodNames() {
   return {"uniform-mcl",           "amcl-kld",       "amcl-kld-50k", "seeded", "seeded-no-uniform", "seeded-no-cross-check",
-          "seeded-no-guard",       "seeded-keypoints-only", "seeded-spread-count", "global-matcher",
-          "global-matcher-guarded"};
+          "seeded-no-guard",       "seeded-keypoints-only", "seeded-spread-count", "seeded-later-scans",
+          "global-matcher",        "global-matcher-guarded"};
 }
 
 namespace {
@@ -19,12 +19,14 @@ constexpr const char* kNoCrossCheck = "seeded-no-cross-check";
 constexpr const char* kNoGuard = "seeded-no-guard";
 constexpr const char* kSpreadCount = "seeded-spread-count";
 constexpr const char* kMatcherGuarded = "global-matcher-guarded";
+constexpr const char* kLaterScans = "seeded-later-scans";
 }  // namespace
 
 bool methodNeedsModels(const std::string& name) {
   return name == "seeded" || name == "seeded-no-uniform" || name == kNoCrossCheck || name == kNoGuard ||
-         name == kKeypointsOnly || name == kSpreadCount;
+         name == kKeypointsOnly || name == kSpreadCount || name == kLaterScans;
 }
+bool methodSeedsFromLaterScans(const std::string& name) { return name == kLaterScans; }
 bool methodUsesLookAlikeGuard(const std::string& name) {
   return (methodNeedsModels(name) && name != kNoGuard && name != kKeypointsOnly) || name == kMatcherGuarded;
 }

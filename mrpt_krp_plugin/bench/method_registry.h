@@ -48,7 +48,9 @@ struct MethodResources {
 /// `seeded-no-guard` (the filter does not check its convergence for look-alike places),
 /// `seeded-keypoints-only` (what the two models and the verification achieve on their own: no
 /// zone search, no cross-check, no guard), `seeded-spread-count` (`seeded` with its particle
-/// count from the hypotheses' spread: SeededInitParams::count_from_spread), `global-matcher`,
+/// count from the hypotheses' spread: SeededInitParams::count_from_spread), `seeded-later-scans`
+/// (`seeded` whose filter, while unsure of its pose, relocalizes later scans and gives their
+/// hypotheses particles: MclParams::later_scans), `global-matcher`,
 /// `global-matcher-guarded` (the
 /// same with the look-alike guard: the ROS node's track mode with its default backend).
 std::vector<std::string> methodNames();
@@ -70,6 +72,9 @@ bool methodUsesSeeThrough(const std::string& name);
 /// settings) and `settings.guard`.
 std::shared_ptr<const LookAlikeGuard> makeLookAlikeGuard(const mrpt::maps::COccupancyGridMap2D& map,
                                                          const MethodSettings& settings);
+/// Whether the method's filter relocalizes later scans while unsure (MclParams::later_scans):
+/// `seeded-later-scans`.
+bool methodSeedsFromLaterScans(const std::string& name);
 /// Whether the method needs the global matcher.
 bool methodNeedsMatcher(const std::string& name);
 

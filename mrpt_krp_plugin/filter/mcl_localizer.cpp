@@ -57,6 +57,7 @@ MclLocalizer::MclLocalizer(OwnMap map, std::shared_ptr<ParticleInitializer> init
   if (params_.kidnap.enabled) fit_scorer_ = std::make_unique<ScanFitScorer>(*map_);
   if (params_.see_through.enabled)
     see_through_ = std::make_unique<SeeThroughPenalty>(*map_, params_.sensor, params_.see_through);
+  validate(params_.later_scans);
 }
 
 void MclLocalizer::setLookAlikeGuard(std::shared_ptr<const LookAlikeGuard> guard) {
@@ -300,6 +301,16 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
   searches_this_update_ = 0;
   search_cpu_this_update_ = 0.0;
   unfinished_this_update_ = 0;
+  const auto& later = params_.later_scans;
+  if (initialized_ && later.enabled && unsure_ && later_scans_used_ < later.max_scans) {
+    if (const auto ranking = init_->laterHypotheses(*step.observations)) {
+      ++later_scans_used_;
+      e.later_scan_relocalized = true;
+      Rng rng(deriveSeed(params_.seed ^ 0x5851f42d4c957f2dull, ++later_scan_draws_));
+      const auto motion = step.action ? odometryIncrement(*step.action) : mrpt::poses::CPose2D();
+      e.later_scan_hypotheses_seeded = seedFromLaterScan(pf_, *ranking, motion, later, rng);
+    }
+  }
   if (!initialized_) {
     reseedMrptGlobalRandom(params_.seed + static_cast<uint32_t>(initializations_));
     init_->initialize(pf_, filter_.m_options, *map_, *step.observations);
@@ -316,6 +327,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     rejected_.clear();
     pending_.reset();
     history_.clear();  // scans from before a re-seed may be from before a kidnap
+    later_scans_used_ = 0;
   }
   auto action = step.action;
   if (!action) {
@@ -369,6 +381,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     if (e.kidnap_detected) initialized_ = false;
   }
   e.particles = weighed;
+  unsure_ = !isConcentrated(filterSpread(cov), later.unsure) || e.scan_unexplained;
   e.look_alike_searches = searches_this_update_;
   e.look_alike_search_cpu_s = search_cpu_this_update_;
   e.look_alike_searches_unfinished = unfinished_this_update_;

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "mrpt_krp_plugin/filter/kidnap_detector.h"
+#include "mrpt_krp_plugin/filter/later_scan_seeding.h"
 #include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/filter/particle_initializer.h"
 #include "mrpt_krp_plugin/filter/scan_history.h"
@@ -28,6 +29,9 @@ struct MclParams {
   /// Beams returning from beyond a mapped obstacle are charged against the particle, and
   /// against a look-alike weighed by the guard, on top of the likelihood field.
   SeeThroughParams see_through;
+  /// While unsure of its pose, the filter relocalizes later scans with its initializer and gives
+  /// their hypotheses particles (off by default).
+  LaterScanSeedingParams later_scans;
 };
 
 /// One filter update's outcome.
@@ -68,6 +72,9 @@ struct MclEstimate {
   /// A look-alike search paused at the guard's max_nodes_per_update and goes on at the next
   /// update (the estimate reads unverified meanwhile, unless a search since convergence finished).
   bool look_alike_search_pending = false;
+  /// The filter was unsure of its pose, and this update's scan was relocalized (LaterScanSeedingParams).
+  bool later_scan_relocalized = false;
+  int later_scan_hypotheses_seeded = 0;  ///< of that scan's hypotheses, those given particles
 };
 
 /// MRPT's CMonteCarloLocalization2D driven step by step, with the start chosen by a
@@ -182,6 +189,9 @@ class MclLocalizer {
   std::deque<RivalTest> rejected_;      ///< look-alikes the scans decided against, moved by odometry
   ScanHistory history_;                 ///< earlier scans a new look-alike is weighed on (guard's history_updates)
   uint64_t guard_draws_ = 0;
+  bool unsure_ = false;        ///< at the last update (LaterScanSeedingParams::unsure)
+  int later_scans_used_ = 0;   ///< later scans relocalized since the last initialization
+  uint64_t later_scan_draws_ = 0;
 };
 
 }  // namespace krp

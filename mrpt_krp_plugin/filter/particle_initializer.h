@@ -10,6 +10,7 @@
 #include <string>
 
 #include "mrpt_krp_plugin/filter/kld_sample_size.h"
+#include "mrpt_krp_plugin/relocalize/hypothesis_ranking.h"
 
 namespace krp {
 
@@ -33,6 +34,11 @@ class ParticleInitializer {
   /// KLD sampling picks the count, never above the start's. MRPT's own KLD path
   /// (`pf_options.adaptiveSampleSize`) does not ask.
   virtual std::optional<KldResampling> kldResampling() const { return std::nullopt; }
+
+  /// For a filter it started that is still unsure of its pose (LaterScanSeedingParams): the
+  /// hypotheses of a later scan, best first. Empty (the default): it has none to offer, as the
+  /// uniform starts have not.
+  virtual std::optional<Ranking> laterHypotheses(const mrpt::obs::CSensoryFrame& /*frame*/) { return std::nullopt; }
 };
 
 }  // namespace krp

@@ -77,6 +77,12 @@ std::optional<KldResampling> SeededInitializer::kldResampling() const {
   return std::nullopt;
 }
 
+std::optional<Ranking> SeededInitializer::laterHypotheses(const mrpt::obs::CSensoryFrame& frame) {
+  const auto scan = frame.getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+  if (!scan) return std::nullopt;
+  return source_(*scan).ranking;
+}
+
 void SeededInitializer::initialize(mrpt::slam::CMonteCarloLocalization2D& pf,
                                    mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf_options,
                                    const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) {

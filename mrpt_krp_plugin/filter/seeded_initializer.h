@@ -86,6 +86,9 @@ class SeededInitializer : public ParticleInitializer {
                   const mrpt::maps::COccupancyGridMap2D& map, const mrpt::obs::CSensoryFrame& first) override;
 
   std::optional<KldResampling> kldResampling() const override;
+  /// The source's answer for the frame's scan (none without one); lastSeeding() stays the
+  /// first scan's.
+  std::optional<Ranking> laterHypotheses(const mrpt::obs::CSensoryFrame& frame) override;
 
   const std::optional<SeedingRecord>& lastSeeding() const { return last_; }
 

@@ -243,5 +243,25 @@ TEST(SeededInitializer, RefusesBadParametersAndFramesWithoutScans) {
   EXPECT_THROW(init.initialize(pf, o, test::asymmetricRoom(), mrpt::obs::CSensoryFrame()), InputError);
 }
 
+TEST(SeededInitializer, AnswersForLaterScansWithoutTouchingTheSeedingRecord) {
+  int calls = 0;
+  SeededInitializer init([&](const auto&) {
+    Ranking r;
+    r.hypotheses = {hypothesis(1.0 + calls, 2.0, 0.5)};
+    ++calls;
+    return r;
+  });
+  mrpt::slam::CMonteCarloLocalization2D pf;
+  mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+  init.initialize(pf, o, test::asymmetricRoom(), frameWithScan());
+  const auto later = init.laterHypotheses(frameWithScan());
+  ASSERT_TRUE(later.has_value());
+  ASSERT_EQ(later->hypotheses.size(), 1u);
+  EXPECT_EQ(later->hypotheses[0].pose.x, 2.0) << "the source's answer for this scan";
+  EXPECT_EQ(init.lastSeeding()->ranking.hypotheses[0].pose.x, 1.0) << "the record stays the first scan's";
+  EXPECT_FALSE(init.laterHypotheses(mrpt::obs::CSensoryFrame()).has_value()) << "no scan, no answer";
+  EXPECT_EQ(calls, 2);
+}
+
 }  // namespace
 }  // namespace krp
