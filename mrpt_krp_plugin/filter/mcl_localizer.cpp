@@ -16,6 +16,9 @@ namespace krp {
 
 namespace {
 
+/// The later-scan seeding's own random stream: turning it on moves no other component's draws.
+constexpr uint64_t kLaterScanStream = 0x5851f42d4c957f2dull;
+
 /// The robot's motion since the last update, as the action records it (zero when it does not).
 mrpt::poses::CPose2D odometryIncrement(const mrpt::obs::CActionCollection& action) {
   const auto move = action.getBestMovementEstimation();
@@ -306,7 +309,7 @@ MclEstimate MclLocalizer::update(const RawlogStep& step) {
     if (const auto ranking = init_->laterHypotheses(*step.observations)) {
       ++later_scans_used_;
       e.later_scan_relocalized = true;
-      Rng rng(deriveSeed(params_.seed ^ 0x5851f42d4c957f2dull, ++later_scan_draws_));
+      Rng rng(deriveSeed(params_.seed ^ kLaterScanStream, ++later_scan_draws_));
       const auto motion = step.action ? odometryIncrement(*step.action) : mrpt::poses::CPose2D();
       e.later_scan_hypotheses_seeded = seedFromLaterScan(pf_, *ranking, motion, later, rng);
     }
