@@ -114,7 +114,7 @@ TEST(Relocalizer, ReadsTheZonesBesideTheModels) {
   EXPECT_FALSE(Relocalizer(dir.string(), *map.grid, off).hasZoneSearch());
 }
 
-// Models without zone outlines (models/warehouse was trained before krp-train-map kept them)
+// Models without zone outlines (trained before krp-train-map kept them, as models/warehouse was)
 // lose the zone search unless the user gives the zones: the relocalizer says so, naming the
 // world whose zones.yaml it needs, and says nothing when the search is on or asked off.
 TEST(Relocalizer, SaysWhyTheZoneSearchIsOff) {

@@ -179,6 +179,20 @@ def _comparison_section(folder: Path):
     return lines + [""]
 
 
+def zone_outlines_lines(m: dict) -> list:
+    """Where the relocalizer's zone search finds the zones the models were trained on."""
+    outlines = m.get("zone_outlines")
+    if not outlines:
+        return ["Zone outlines: none beside the models (trained before krp-train-map kept them); give the "
+                "relocalizer the zones they were trained on (`krp-localize --zones`, the ROS node's `zones_file`), "
+                "or its zone search is off.", ""]
+    line = (f"Zone outlines: `{outlines['file']}` beside the models (sha256 `{outlines['sha256'][:16]}…`), "
+            "the zones the dataset was made with; the relocalizer's zone search reads them.")
+    if outlines.get("added_after_training"):
+        line += " " + outlines["added_after_training"]
+    return [line, ""]
+
+
 def write(folder: Path, m: dict, previous: Path = None, name: str = None) -> None:
     folder = Path(folder)
     if previous is not None and Path(previous).is_dir():
@@ -196,7 +210,7 @@ def write(folder: Path, m: dict, previous: Path = None, name: str = None) -> Non
              f"Dataset: seed {m['dataset']['seed']}, card sha256 `{m['dataset']['card_sha256'][:16]}…` "
              "(see DATASET_CARD.md); splits by 2 m floor block, so no location is in two splits. "
              "`changed` is a separate split with three times the clutter and occlusion and a third of the "
-             "furniture moved.", "",
+             "furniture moved.", ""] + zone_outlines_lines(m) + [
              "`keypoints.onnx` is exported by ultralytics and carries its AGPL-3.0 licence in its metadata "
              "(see models/training/LICENSE).", ""]
     lines += _classifier_section(m) + _keypoint_section(m) + _latency_section(folder, m, name or folder.name) + _comparison_section(folder)
