@@ -88,23 +88,24 @@ TEST(LaterScanSeeding, MovesTheParticlesBackByTheUpdatesMotion) {
   EXPECT_NEAR(phi / moved, M_PI / 2, 0.02);
 }
 
-TEST(LaterScanSeeding, RefusesSharesThatDoNotFit) {
-  LaterScanSeedingParams p;
-  EXPECT_NO_THROW(validate(p));
-  p.share_per_hypothesis = 0.4;  // three hypotheses cannot have 0.4 each
-  EXPECT_THROW(validate(p), InputError);
-  p = {};
-  p.share_per_hypothesis = 0.0;
-  EXPECT_THROW(validate(p), InputError);
-  p = {};
-  p.max_scans = -1;
-  EXPECT_THROW(validate(p), InputError);
-  p = {};
-  p.max_hypotheses = 0;
-  EXPECT_THROW(validate(p), InputError);
-  p = {};
-  p.spread_xy_m = -0.1;
-  EXPECT_THROW(validate(p), InputError);
+TEST(LaterScanSeeding, RefusesParametersOutOfRange) {
+  EXPECT_NO_THROW(validate(LaterScanSeedingParams{}));
+  // True when the defaults with `change` applied are refused with an InputError.
+  const auto refused = [](void (*change)(LaterScanSeedingParams&)) {
+    LaterScanSeedingParams p;
+    change(p);
+    try {
+      validate(p);
+    } catch (const InputError&) {
+      return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refused([](auto& p) { p.share_per_hypothesis = 0.4; })) << "three hypotheses cannot have 0.4 each";
+  EXPECT_TRUE(refused([](auto& p) { p.share_per_hypothesis = 0.0; }));
+  EXPECT_TRUE(refused([](auto& p) { p.max_scans = -1; }));
+  EXPECT_TRUE(refused([](auto& p) { p.max_hypotheses = 0; }));
+  EXPECT_TRUE(refused([](auto& p) { p.spread_xy_m = -0.1; }));
 }
 
 }  // namespace

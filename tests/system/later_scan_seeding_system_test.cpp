@@ -9,46 +9,24 @@
 #include "mrpt_krp_plugin/filter/filter_spread.h"
 #include "mrpt_krp_plugin/filter/mcl_localizer.h"
 #include "mrpt_krp_plugin/filter/seeded_initializer.h"
-#include "mrpt_krp_plugin/sim/rawlog_io.h"
-#include "mrpt_krp_plugin/sim/trial.h"
-#include "support/test_maps.h"
+#include "support/seeded_drives.h"
 
 namespace krp {
 namespace {
 
-PoseHypothesis hypothesisAt(const mrpt::math::TPose2D& p) {
-  PoseHypothesis h;
-  h.pose = p;
-  h.cov.setZero();
-  h.cov(0, 0) = h.cov(1, 1) = 0.3 * 0.3;
-  h.cov(2, 2) = std::pow(5.0 * M_PI / 180.0, 2);
-  h.confidence = 1.0;
-  return h;
-}
-
-// 8 updates in the asymmetric room, 360 deg 12 m lidar, trial seed 2.
-struct RoomDrive {
-  std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> room =
-      std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
-  Trial trial = [&] {
-    TrialParams tp;
-    tp.steps = 8;
-    return generateTrial(*room, lidarProfileByName("omni_12m"), tp, 2);
-  }();
-  std::vector<RawlogStep> steps = trialToSteps(trial);
-};
+using test::RoomTrial;
 
 // The first scan's only answer is a wrong place and there is no uniform share, so no particle
 // starts near the truth; every later scan's answer is the truth.
 struct WrongFirstAnswer {
-  const RoomDrive& drive;
+  const RoomTrial& drive;
   std::size_t step = 0;
   int calls = 0;
   Ranking operator()(const mrpt::obs::CObservation2DRangeScan&) {
     ++calls;
     const auto& truth = drive.trial.truth[step];
     Ranking r;
-    r.hypotheses = {hypothesisAt(step == 0 ? mrpt::math::TPose2D(truth.x > 4.0 ? 1.5 : 6.5, 4.5, truth.phi + 2.0) : truth)};
+    r.hypotheses = {test::hypothesisAt(step == 0 ? mrpt::math::TPose2D(truth.x > 4.0 ? 1.5 : 6.5, 4.5, truth.phi + 2.0) : truth, 1.0)};
     return r;
   }
 };
@@ -59,7 +37,7 @@ struct DriveResult {
   int calls = 0;
 };
 
-DriveResult drive(const RoomDrive& d, const MclParams& mp) {
+DriveResult drive(const RoomTrial& d, const MclParams& mp) {
   auto answer = std::make_shared<WrongFirstAnswer>(WrongFirstAnswer{d});
   SeededInitParams sp;
   sp.uniform_fraction = 0.0;
@@ -79,7 +57,7 @@ DriveResult drive(const RoomDrive& d, const MclParams& mp) {
 }
 
 TEST(SystemLaterScans, AWrongFirstAnswerIsRecoveredFromLaterScans) {
-  const RoomDrive d;
+  const RoomTrial d;
   MclParams mp;
   mp.seed = 2;
   // The stand-in's wrong place fits this room's scans badly, yet a filter without the look-alike
@@ -98,13 +76,13 @@ TEST(SystemLaterScans, AWrongFirstAnswerIsRecoveredFromLaterScans) {
 }
 
 TEST(SystemLaterScans, OnlyAnUnsureFilterRelocalizesALaterScan) {
-  const RoomDrive d;
+  const RoomTrial d;
   int calls = 0;
   std::size_t step = 0;
   auto init = std::make_shared<SeededInitializer>([&](const auto&) {
     ++calls;
     Ranking r;
-    r.hypotheses = {hypothesisAt(d.trial.truth[step])};
+    r.hypotheses = {test::hypothesisAt(d.trial.truth[step], 1.0)};
     return r;
   });
   MclParams mp;

@@ -12,20 +12,13 @@
 #include "mrpt_krp_plugin/filter/seeded_initializer.h"
 #include "mrpt_krp_plugin/sim/rawlog_io.h"
 #include "mrpt_krp_plugin/sim/trial.h"
+#include "support/seeded_drives.h"
 #include "support/test_maps.h"
 
 namespace krp {
 namespace {
 
-PoseHypothesis hypothesisAt(const mrpt::math::TPose2D& p, double confidence) {
-  PoseHypothesis h;
-  h.pose = p;
-  h.cov.setZero();
-  h.cov(0, 0) = h.cov(1, 1) = 0.3 * 0.3;
-  h.cov(2, 2) = std::pow(5.0 * M_PI / 180.0, 2);
-  h.confidence = confidence;
-  return h;
-}
+using test::hypothesisAt;
 
 TEST(SystemSeededMcl, ConvergesFromTheFirstScanWithFewParticles) {
   const auto room = std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
@@ -109,19 +102,8 @@ TEST(SystemSeededMcl, DetectsAKidnapAndRecoversByReseeding) {
 namespace krp {
 namespace {
 
-TrialParams eightSteps() {
-  TrialParams tp;
-  tp.steps = 8;
-  return tp;
-}
-
-// The shrinking tests' drive: 8 updates in the asymmetric room, 360 deg 12 m lidar, trial seed 2.
-struct RoomTrial {
-  std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> room =
-      std::make_shared<const mrpt::maps::COccupancyGridMap2D>(test::asymmetricRoom());
-  Trial trial = generateTrial(*room, lidarProfileByName("omni_12m"), eightSteps(), 2);
-  std::vector<RawlogStep> steps = trialToSteps(trial);
-};
+// The shrinking tests' drive.
+using test::RoomTrial;
 
 // With nothing from the relocalizer the filter starts uniform, over the whole map; once it has
 // converged it should track with a seeded start's few hundred particles, not keep them all.
