@@ -15,7 +15,7 @@ from pathlib import Path
 
 import torch
 
-from . import classifier_models, train_classifier
+from . import classifier_models, comparison_record, train_classifier
 from .augment import AugmentParams, max_rotation_deg
 from .image_folders import read_split
 from .train_map import DEFAULT_BIN_DIR, REPO_ROOT
@@ -71,65 +71,82 @@ def leave_one_zone_out(sets: dict, zones: list, params: train_classifier.Classif
             "finding": finding}
 
 
-def main(argv=None) -> int:
+def _parse_args(argv):
     p = argparse.ArgumentParser(prog="compare", description=__doc__.splitlines()[0])
     p.add_argument("--world", required=True)
     p.add_argument("--out", required=True, type=Path, help="model folder; comparison.json is written there")
-    p.add_argument("--architectures", default=",".join(classifier_models.ARCHITECTURES))
+    p.add_argument("--architectures", default=",".join(classifier_models.ARCHITECTURES),
+                   help="comma-separated, of: " + ", ".join(classifier_models.ARCHITECTURES))
     p.add_argument("--samples-per-zone", type=int, default=300)
     p.add_argument("--train-limit", type=int, default=0, help="train on at most this many images (0 = all)")
     p.add_argument("--epochs", type=int, default=10)
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--bin-dir", type=Path, default=DEFAULT_BIN_DIR)
     p.add_argument("--skip-loo", action="store_true", help="skip the leave-one-zone-out check")
+    p.add_argument("--add", action="store_true",
+                   help="add these architectures' runs to the existing comparison.json (same budget and datasets, "
+                        "checked), each saved as it finishes; without it comparison.json is replaced at the end")
     args = p.parse_args(argv)
-    command = "python -m krp_training.compare " + " ".join(shlex.quote(a) for a in (argv or sys.argv[1:]))
     archs = [a for a in args.architectures.split(",") if a]
-    runs, eval_sets, zones = [], None, None
+    unknown = [a for a in archs if a not in classifier_models.ARCHITECTURES]
+    if unknown or not archs:
+        p.error(f"--architectures: unknown {unknown or 'none given'}; choose from "
+                f"{', '.join(classifier_models.ARCHITECTURES)}")
+    args.architectures = archs
+    return args
+
+
+def main(argv=None) -> int:
+    args = _parse_args(argv)
+    command = "python -m krp_training.compare " + " ".join(shlex.quote(a) for a in (argv or sys.argv[1:]))
+    budget = {"world": args.world, "epochs": args.epochs, "samples_per_zone": args.samples_per_zone,
+              "train_limit": args.train_limit, "seed": args.seed}
     with tempfile.TemporaryDirectory() as tmp:
-        for strength in (1.0, 0.0):
-            d = make_dataset(args.bin_dir, args.world, strength, args.samples_per_zone, args.seed,
-                         Path(tmp) / f"strength{strength}")
-            card = json.loads((d / "dataset_card.json").read_text())
-            zones = card["zones"]
-            augment = AugmentParams(max_rotation_deg=max_rotation_deg(card))
-            sets = {s: read_split(d, s, zones) for s in ("train", "val", "test", "changed")}
-            if strength > 0:
-                eval_sets = sets  # both variants are judged on the realistic (scenario) splits
-            train_set = _limit(sets["train"], args.train_limit, args.seed)
-            for arch in archs:
+        dirs = {s: make_dataset(args.bin_dir, args.world, s, args.samples_per_zone, args.seed,
+                                Path(tmp) / f"strength{s}") for s in comparison_record.STRENGTHS}
+        digests = {_strength_key(s): comparison_record.dataset_digest(d) for s, d in dirs.items()}
+        try:
+            record = comparison_record.start(budget, digests, command,
+                                             comparison_record.read(args.out) if args.add else None)
+        except comparison_record.ComparisonMismatch as e:
+            print(f"compare: {args.out / comparison_record.FILE_NAME}: {e}", file=sys.stderr)
+            return 2
+        card = json.loads((dirs[1.0] / "dataset_card.json").read_text())
+        zones = card["zones"]
+        augment = AugmentParams(max_rotation_deg=max_rotation_deg(card))
+        sets = {s: {split: read_split(d, split, zones) for split in ("train", "val", "test", "changed")}
+                for s, d in dirs.items()}
+        eval_sets = sets[1.0]  # both variants are judged on the realistic (scenario) splits
+        # Without --add the old comparison stays whole until this one is; its progress goes beside it.
+        progress_name = comparison_record.FILE_NAME if args.add else "comparison.running.json"
+        for arch in args.architectures:
+            for strength in comparison_record.STRENGTHS:
+                train_set = _limit(sets[strength]["train"], args.train_limit, args.seed)
                 params = train_classifier.ClassifierParams(architecture=arch, epochs=args.epochs, seed=args.seed,
                                                            augment=augment)
-                res = train_classifier.train(train_set, sets["val"], len(zones), params,
+                res = train_classifier.train(train_set, sets[strength]["val"], len(zones), params,
                                              progress_label=f"{arch} strength {strength}")
-                runs.append({"architecture": arch, "strength": strength, "epochs": args.epochs,
-                             "train_images": len(train_set), "seconds": res.seconds,
-                             **{s: train_classifier.accuracy(res.model, eval_sets[s]) for s in
-                                ("val", "test", "changed")}})
-                print(json.dumps(runs[-1]), flush=True)
-        loo = None
+                run = {"architecture": arch, "strength": strength, "epochs": args.epochs,
+                       "train_images": len(train_set), "seconds": res.seconds,
+                       **{s: train_classifier.accuracy(res.model, eval_sets[s]) for s in ("val", "test", "changed")}}
+                comparison_record.add_run(record, run)
+                comparison_record.write(args.out, record, progress_name)
+                print(json.dumps(run), flush=True)
         if not args.skip_loo:
-            loo = leave_one_zone_out(eval_sets, zones, train_classifier.ClassifierParams(epochs=args.epochs,
-                                                                                          seed=args.seed,
-                                                                                          augment=augment))
-    ratios = {}
-    for arch in archs:
-        w = next(r for r in runs if r["architecture"] == arch and r["strength"] > 0)
-        wo = next(r for r in runs if r["architecture"] == arch and r["strength"] == 0)
-        if w["changed"] is not None and wo["changed"]:
-            ratios[arch] = w["changed"] / wo["changed"]
-    result = {"command": command, "note": f"Budget: {args.epochs} epochs, {args.samples_per_zone} poses per zone, "
-              f"training on at most {args.train_limit or 'all'} images; every run is evaluated on the splits of the "
-              "dataset made with scenario generation.", "runs": runs, "ratios": ratios, "leave_one_zone_out": loo}
-    args.out.mkdir(parents=True, exist_ok=True)
-    tmp_json = args.out / "comparison.json.partial"
-    tmp_json.write_text(json.dumps(result, indent=2) + "\n")
-    tmp_json.replace(args.out / "comparison.json")
+            record["leave_one_zone_out"] = leave_one_zone_out(
+                eval_sets, zones, train_classifier.ClassifierParams(epochs=args.epochs, seed=args.seed, augment=augment))
+    comparison_record.write(args.out, record)
+    if not args.add:
+        (args.out / progress_name).unlink(missing_ok=True)
     if (args.out / "manifest.json").exists():
         from . import report
         report.write(args.out, json.loads((args.out / "manifest.json").read_text()), name=str(args.out))
-    print(f"comparison: {args.out / 'comparison.json'}")
+    print(f"comparison: {args.out / comparison_record.FILE_NAME}")
     return 0
+
+
+def _strength_key(strength: float) -> str:
+    return "with_scenarios" if strength > 0 else "without_scenarios"
 
 
 if __name__ == "__main__":

@@ -9,7 +9,7 @@ import json
 import shutil
 from pathlib import Path
 
-from . import train_keypoints
+from . import classifier_models, train_keypoints
 
 SIDE_RESULTS = ("comparison.json", "latency.json")
 
@@ -155,11 +155,30 @@ def _comparison_section(folder: Path):
         return ["## Architecture comparison (Table 4.2's analogue)", "",
                 "Not run yet: `scripts/compare_classifiers.sh <world>`.", ""]
     c = json.loads(path.read_text())
-    lines = ["## Architecture comparison (Table 4.2's analogue)", "", f"Command: `{c['command']}`", "",
-             c.get("note", ""), "",
-             "| architecture | scenario generation | val acc | test acc | changed acc | epochs | train s |",
-             "|---|---|---|---|---|---|---|"]
-    for r in c["runs"]:
+    return ["## Architecture comparison (Table 4.2's analogue)", ""] + comparison_lines(c) + [""]
+
+
+def comparison_lines(c: dict) -> list:
+    """comparison.json (krp_training.compare) as Markdown: commands, budget, runs, ratios, leave-one-zone-out."""
+    commands = c.get("commands") or [c["command"]]
+    if len(commands) == 1:
+        lines = [f"Command: `{commands[0]}`", ""]
+    else:
+        lines = ["Commands, one after another, each adding its architectures' runs to the same budget and "
+                 "datasets (checked by `--add`):", ""] + [f"- `{command}`" for command in commands] + [""]
+    lines += [c.get("note", ""), ""]
+    if c.get("dataset_sha256"):
+        d = c["dataset_sha256"]
+        lines += [f"Datasets (sha256 of the classifier images): with scenario generation "
+                  f"`{d['with_scenarios'][:16]}…`, without `{d['without_scenarios'][:16]}…`.", ""]
+    lines += ["| architecture | scenario generation | val acc | test acc | changed acc | epochs | train s |",
+              "|---|---|---|---|---|---|---|"]
+    known = list(classifier_models.ARCHITECTURES)
+
+    def order(r):  # the architectures as the thesis's table lists them, each with scenario generation first
+        return known.index(r["architecture"]) if r["architecture"] in known else len(known), -r["strength"]
+
+    for r in sorted(c["runs"], key=order):
         lines.append(f"| {r['architecture']} | {'with' if r['strength'] > 0 else 'without'} | {_pct(r['val'])} | "
                      f"{_pct(r['test'])} | {_pct(r['changed'])} | {r['epochs']} | {r['seconds']:.0f} |")
     if c.get("ratios"):
@@ -176,7 +195,7 @@ def _comparison_section(folder: Path):
             lines.append(f"| {r['trained_on']} | {r['evaluated_on']} | {_f(r['mean_max_probability'])} | "
                          f"{_pct(r['predicted_trained_zone'])} |")
         lines += ["", lz["finding"]]
-    return lines + [""]
+    return lines
 
 
 def zone_outlines_lines(m: dict) -> list:
