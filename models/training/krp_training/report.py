@@ -186,6 +186,15 @@ def comparison_lines(c: dict) -> list:
                   "| architecture | ratio |", "|---|---|"]
         for arch, ratio in c["ratios"].items():
             lines.append(f"| {arch} | {_f(ratio, 2)} |")
+    if c.get("latency_ms"):
+        lines += ["", f"Inference latency of each architecture's exported classifier, one thread, "
+                      f"{c.get('latency_runtime', 'onnxruntime')}; an untrained network of the same graph, since "
+                      f"latency does not depend on the weights (`{c.get('latency_command', '')}`):", "",
+                  "| architecture | ONNX size | median | p90 | runs |", "|---|---|---|---|---|"]
+        for arch in sorted(c["latency_ms"], key=lambda a: known.index(a) if a in known else len(known)):
+            t = c["latency_ms"][arch]
+            lines.append(f"| {arch} | {t['onnx_bytes'] / 1e6:.1f} MB | {t['median']:.2f} ms | {t['p90']:.2f} ms | "
+                         f"{t['runs']} |")
     if c.get("leave_one_zone_out"):
         lz = c["leave_one_zone_out"]
         lines += ["", "### Leave-one-zone-out check", "", lz["what"], "",

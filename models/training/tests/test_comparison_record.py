@@ -89,3 +89,27 @@ def test_an_unknown_architecture_is_refused_before_any_work(tmp_path, capsys):
     assert e.value.code == 2
     assert "unknown ['resnet50']" in capsys.readouterr().err
     assert not any(tmp_path.iterdir())
+
+
+def test_each_architecture_latency_is_measured_on_its_exported_graph(tmp_path):
+    from krp_training import architecture_latency
+    t = architecture_latency.measure("compact", 64, runs=5, warmup=1, work_dir=tmp_path)
+    assert t["runs"] == 5 and 0 < t["median"] <= t["p90"] and t["onnx_bytes"] > 0
+    assert (tmp_path / "compact.onnx").exists()
+
+
+def test_the_report_shows_the_latency_in_the_thesis_order():
+    record = comparison_record.start(BUDGET, DIGESTS, "first")
+    record["latency_ms"] = {"vgg16": {"runs": 200, "median": 90.0, "p90": 95.0, "onnx_bytes": 58_800_000},
+                            "compact": {"runs": 200, "median": 0.5, "p90": 0.6, "onnx_bytes": 400_000}}
+    record["latency_command"] = "python -m krp_training.architecture_latency --out m"
+    lines = report.comparison_lines(record)
+    rows = [line for line in lines if line.startswith("| compact | 0.4 MB") or line.startswith("| vgg16 | 58.8 MB")]
+    assert rows == ["| compact | 0.4 MB | 0.50 ms | 0.60 ms | 200 |", "| vgg16 | 58.8 MB | 90.00 ms | 95.00 ms | 200 |"]
+
+
+def test_latency_needs_a_comparison_to_add_to(tmp_path, capsys):
+    from krp_training import architecture_latency
+    with pytest.raises(SystemExit) as e:
+        architecture_latency.main(["--out", str(tmp_path), "--architectures", "compact"])
+    assert e.value.code == 2 and "run krp_training.compare first" in capsys.readouterr().err
