@@ -117,6 +117,8 @@ def main(argv=None) -> int:
         sets = {s: {split: read_split(d, split, zones) for split in ("train", "val", "test", "changed")}
                 for s, d in dirs.items()}
         eval_sets = sets[1.0]  # both variants are judged on the realistic (scenario) splits
+        # How many images each accuracy is over: at a few hundred, one image moves it by a point or more.
+        record["split_images"] = {s: len(eval_sets[s]) for s in ("val", "test", "changed")}
         # Without --add the old comparison stays whole until this one is; its progress goes beside it.
         progress_name = comparison_record.FILE_NAME if args.add else "comparison.running.json"
         for arch in args.architectures:

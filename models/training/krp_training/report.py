@@ -158,6 +158,10 @@ def _comparison_section(folder: Path):
     return ["## Architecture comparison (Table 4.2's analogue)", ""] + comparison_lines(c) + [""]
 
 
+def _points(images: int) -> str:
+    return f"{100.0 / images:.1f}" if images else "-"
+
+
 def comparison_lines(c: dict) -> list:
     """comparison.json (krp_training.compare) as Markdown: commands, budget, runs, ratios, leave-one-zone-out."""
     commands = c.get("commands") or [c["command"]]
@@ -171,6 +175,11 @@ def comparison_lines(c: dict) -> list:
         d = c["dataset_sha256"]
         lines += [f"Datasets (sha256 of the classifier images): with scenario generation "
                   f"`{d['with_scenarios'][:16]}…`, without `{d['without_scenarios'][:16]}…`.", ""]
+    if c.get("split_images"):
+        n = c["split_images"]
+        lines += [f"Each accuracy is over the scenario dataset's val / test / changed splits: {n['val']} / "
+                  f"{n['test']} / {n['changed']} images, so one image moves it by "
+                  f"{_points(n['val'])} / {_points(n['test'])} / {_points(n['changed'])} points.", ""]
     lines += ["| architecture | scenario generation | val acc | test acc | changed acc | epochs | train s |",
               "|---|---|---|---|---|---|---|"]
     known = list(classifier_models.ARCHITECTURES)

@@ -113,3 +113,10 @@ def test_latency_needs_a_comparison_to_add_to(tmp_path, capsys):
     with pytest.raises(SystemExit) as e:
         architecture_latency.main(["--out", str(tmp_path), "--architectures", "compact"])
     assert e.value.code == 2 and "run krp_training.compare first" in capsys.readouterr().err
+
+
+def test_the_report_says_how_much_one_image_moves_each_accuracy():
+    record = comparison_record.start(BUDGET, DIGESTS, "first")
+    record["split_images"] = {"val": 120, "test": 104, "changed": 60}
+    text = "\n".join(report.comparison_lines(record))
+    assert "120 / 104 / 60 images, so one image moves it by 0.8 / 1.0 / 1.7 points." in text
