@@ -65,12 +65,11 @@ def main(argv=None) -> int:
     record = comparison_record.read(args.out)
     if record is None:
         p.error(f"{args.out / comparison_record.FILE_NAME}: not found; run krp_training.compare first")
-    archs = [a for a in args.architectures.split(",") if a] or list(dict.fromkeys(r["architecture"]
-                                                                                   for r in record["runs"]))
-    unknown = [a for a in archs if a not in classifier_models.ARCHITECTURES]
-    if unknown or not archs:
-        p.error(f"--architectures: unknown {unknown or 'none given'}; choose from "
-                f"{', '.join(classifier_models.ARCHITECTURES)}")
+    compared = ",".join(dict.fromkeys(r["architecture"] for r in record["runs"]))
+    try:
+        archs = classifier_models.parse_list(args.architectures or compared)
+    except ValueError as e:
+        p.error(f"--architectures: {e}")
     import onnxruntime as ort
 
     latency = dict(record.get("latency_ms") or {})

@@ -76,6 +76,15 @@ def _vgg(builder, num_classes: int, dropout: float) -> nn.Module:
     return GreyToRgb(net)
 
 
+def parse_list(text: str) -> list:
+    """A comma-separated list of architectures; ValueError naming the unknown ones (or none given)."""
+    archs = [a for a in text.split(",") if a]
+    unknown = [a for a in archs if a not in ARCHITECTURES]
+    if unknown or not archs:
+        raise ValueError(f"unknown {unknown or 'none given'}; choose from {', '.join(ARCHITECTURES)}")
+    return archs
+
+
 def build(architecture: str, num_classes: int, dropout: float = 0.3, input_px: int = 160) -> nn.Module:
     if architecture == "compact":
         return CompactNet(num_classes, input_px=input_px, dropout=dropout)

@@ -87,12 +87,10 @@ def _parse_args(argv):
                    help="add these architectures' runs to the existing comparison.json (same budget and datasets, "
                         "checked), each saved as it finishes; without it comparison.json is replaced at the end")
     args = p.parse_args(argv)
-    archs = [a for a in args.architectures.split(",") if a]
-    unknown = [a for a in archs if a not in classifier_models.ARCHITECTURES]
-    if unknown or not archs:
-        p.error(f"--architectures: unknown {unknown or 'none given'}; choose from "
-                f"{', '.join(classifier_models.ARCHITECTURES)}")
-    args.architectures = archs
+    try:
+        args.architectures = classifier_models.parse_list(args.architectures)
+    except ValueError as e:
+        p.error(f"--architectures: {e}")
     return args
 
 

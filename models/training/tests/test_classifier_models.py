@@ -25,3 +25,12 @@ def test_normalize_maps_the_three_grey_levels_to_minus_one_zero_one():
 def test_compact_refuses_an_image_side_it_cannot_grid():
     with pytest.raises(ValueError, match="multiple of 32"):
         classifier_models.build("compact", 2, input_px=150)
+
+
+def test_an_architecture_list_names_what_it_does_not_know():
+    from krp_training.classifier_models import parse_list
+    assert parse_list("compact,,vgg16") == ["compact", "vgg16"]
+    with pytest.raises(ValueError, match=r"unknown \['resnet50'\]"):
+        parse_list("compact,resnet50")
+    with pytest.raises(ValueError, match="none given"):
+        parse_list(",")
