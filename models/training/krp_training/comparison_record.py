@@ -34,14 +34,15 @@ def budget_note(budget: dict) -> str:
             f"{limit} images; every run is evaluated on the splits of the dataset made with scenario generation.")
 
 
-def ratios(runs: list) -> dict:
-    """Changed-split accuracy with / without scenario generation, per architecture that has both."""
+def ratios(runs: list, split: str = "changed") -> dict:
+    """`split`'s accuracy with / without scenario generation, per architecture that has both (the
+    thesis's Table 4.2 gives the test split's; the changed split is where scenario generation should show)."""
     out = {}
     for arch in dict.fromkeys(r["architecture"] for r in runs):
         with_sg = [r for r in runs if r["architecture"] == arch and r["strength"] > 0]
         without = [r for r in runs if r["architecture"] == arch and r["strength"] == 0]
-        if with_sg and without and with_sg[0]["changed"] is not None and without[0]["changed"]:
-            out[arch] = with_sg[0]["changed"] / without[0]["changed"]
+        if with_sg and without and with_sg[0][split] is not None and without[0][split]:
+            out[arch] = with_sg[0][split] / without[0][split]
     return out
 
 

@@ -9,7 +9,7 @@ import json
 import shutil
 from pathlib import Path
 
-from . import classifier_models, train_keypoints
+from . import classifier_models, comparison_record, train_keypoints
 
 SIDE_RESULTS = ("comparison.json", "latency.json")
 
@@ -191,10 +191,12 @@ def comparison_lines(c: dict) -> list:
         lines.append(f"| {r['architecture']} | {'with' if r['strength'] > 0 else 'without'} | {_pct(r['val'])} | "
                      f"{_pct(r['test'])} | {_pct(r['changed'])} | {r['epochs']} | {r['seconds']:.0f} |")
     if c.get("ratios"):
-        lines += ["", "Ratio with / without scenario generation (changed-split accuracy):", "",
-                  "| architecture | ratio |", "|---|---|"]
-        for arch, ratio in c["ratios"].items():
-            lines.append(f"| {arch} | {_f(ratio, 2)} |")
+        test = comparison_record.ratios(c["runs"], "test")
+        lines += ["", "Ratio of accuracies with / without scenario generation (the thesis's Table 4.2 gives the "
+                      "test split's):", "",
+                  "| architecture | test | changed |", "|---|---|---|"]
+        for arch in sorted(c["ratios"], key=lambda a: known.index(a) if a in known else len(known)):
+            lines.append(f"| {arch} | {_f(test.get(arch), 2)} | {_f(c['ratios'][arch], 2)} |")
     if c.get("latency_ms"):
         lines += ["", f"Inference latency of each architecture's exported classifier, one thread, "
                       f"{c.get('latency_runtime', 'onnxruntime')}; an untrained network of the same graph, since "

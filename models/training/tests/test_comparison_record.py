@@ -24,6 +24,8 @@ def test_a_run_replaces_the_same_architecture_and_strength_and_the_ratio_follows
     comparison_record.add_run(record, run("compact", 0.0, 0.5))
     assert len(record["runs"]) == 2
     assert record["ratios"] == {"compact": pytest.approx(1.6)}
+    record["runs"][0]["test"] = 0.9
+    assert comparison_record.ratios(record["runs"], "test") == {"compact": pytest.approx(1.8)}
 
 
 def test_adding_keeps_the_earlier_runs_and_commands():
@@ -80,7 +82,7 @@ def test_the_report_lists_every_command_and_the_runs_in_the_thesis_order():
     rows = [line for line in text.splitlines() if line.startswith("| compact |") or line.startswith("| vgg16 |")]
     assert [row.split("|")[1:3] for row in rows[:3]] == [[" compact ", " with "], [" vgg16 ", " with "],
                                                           [" vgg16 ", " without "]]
-    assert "`aaaaaaaaaaaaaaaa…`" in text and "| vgg16 | 2.00 |" in text
+    assert "`aaaaaaaaaaaaaaaa…`" in text and "| vgg16 | 1.00 | 2.00 |" in text
 
 
 def test_an_unknown_architecture_is_refused_before_any_work(tmp_path, capsys):
