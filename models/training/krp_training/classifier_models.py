@@ -9,7 +9,10 @@ import torch
 from torch import nn
 import torchvision
 
-ARCHITECTURES = ("compact", "googlenet", "vgg16", "vgg19", "densenet121")
+# vgg16_bn / vgg19_bn are VGG16 / VGG19 with batch normalization after every convolution: trained from
+# scratch (weights=None), 13 or 16 plain convolutions without it are known to be hard to get moving,
+# and the thesis notes its VGGs needed careful tuning of the learning rate.
+ARCHITECTURES = ("compact", "googlenet", "vgg16", "vgg16_bn", "vgg19", "vgg19_bn", "densenet121")
 
 # Occupancy image grey levels are 0 (occupied), 128 (unknown), 255 (free): centre them on 0.
 INPUT_MEAN = 0.5
@@ -96,6 +99,10 @@ def build(architecture: str, num_classes: int, dropout: float = 0.3, input_px: i
         return _vgg(torchvision.models.vgg16, num_classes, dropout)
     if architecture == "vgg19":
         return _vgg(torchvision.models.vgg19, num_classes, dropout)
+    if architecture == "vgg16_bn":
+        return _vgg(torchvision.models.vgg16_bn, num_classes, dropout)
+    if architecture == "vgg19_bn":
+        return _vgg(torchvision.models.vgg19_bn, num_classes, dropout)
     if architecture == "densenet121":
         net = torchvision.models.densenet121(weights=None, num_classes=num_classes, drop_rate=dropout)
         return GreyToRgb(net)
