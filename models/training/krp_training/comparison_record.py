@@ -29,9 +29,10 @@ def dataset_digest(dataset_dir: Path) -> str:
 
 
 def budget_note(budget: dict) -> str:
-    limit = budget["train_limit"] or "all"
-    return (f"Budget: {budget['epochs']} epochs, {budget['samples_per_zone']} poses per zone, training on at most "
-            f"{limit} images; every run is evaluated on the splits of the dataset made with scenario generation.")
+    images = (f"training on at most {budget['train_limit']} of the training split's images" if budget["train_limit"]
+              else "training on the whole training split")
+    return (f"Budget: {budget['epochs']} epochs, {budget['samples_per_zone']} poses per zone, {images}, seed "
+            f"{budget['seed']}; every run is evaluated on the splits of the dataset made with scenario generation.")
 
 
 def ratios(runs: list, split: str = "changed") -> dict:

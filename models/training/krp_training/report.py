@@ -170,7 +170,7 @@ def comparison_lines(c: dict) -> list:
     else:
         lines = ["Commands, one after another, each adding its architectures' runs to the same budget and "
                  "datasets (checked by `--add`):", ""] + [f"- `{command}`" for command in commands] + [""]
-    lines += [c.get("note", ""), ""]
+    lines += [comparison_record.budget_note(c["budget"]) if c.get("budget") else c.get("note", ""), ""]
     if c.get("dataset_sha256"):
         d = c["dataset_sha256"]
         lines += [f"Datasets (sha256 of the classifier images): with scenario generation "

@@ -122,3 +122,8 @@ def test_the_report_says_how_much_one_image_moves_each_accuracy():
     record["split_images"] = {"val": 120, "test": 104, "changed": 60}
     text = "\n".join(report.comparison_lines(record))
     assert "120 / 104 / 60 images, so one image moves it by 0.8 / 1.0 / 1.7 points." in text
+
+
+def test_the_budget_note_says_how_many_images_trained():
+    assert "training on the whole training split, seed 1;" in comparison_record.budget_note(BUDGET)
+    assert "at most 500 of the training split's images" in comparison_record.budget_note({**BUDGET, "train_limit": 500})
