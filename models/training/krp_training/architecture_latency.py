@@ -82,9 +82,8 @@ def main(argv=None) -> int:
                                  " ".join(shlex.quote(a) for a in (argv or sys.argv[1:])))
     record["latency_runtime"] = f"onnxruntime {ort.__version__} (Python), {args.input_px} px input"
     comparison_record.write(args.out, record)
-    if (args.out / "manifest.json").exists():
-        from . import report
-        report.write(args.out, json.loads((args.out / "manifest.json").read_text()), name=str(args.out))
+    from . import report
+    report.refresh(args.out)
     return 0
 
 

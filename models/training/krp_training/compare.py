@@ -138,9 +138,8 @@ def main(argv=None) -> int:
     comparison_record.write(args.out, record)
     if not args.add:
         (args.out / progress_name).unlink(missing_ok=True)
-    if (args.out / "manifest.json").exists():
-        from . import report
-        report.write(args.out, json.loads((args.out / "manifest.json").read_text()), name=str(args.out))
+    from . import report
+    report.refresh(args.out)
     print(f"comparison: {args.out / comparison_record.FILE_NAME}")
     return 0
 

@@ -158,6 +158,12 @@ def _comparison_section(folder: Path):
     return ["## Architecture comparison (Table 4.2's analogue)", ""] + comparison_lines(c) + [""]
 
 
+def _thesis_rank(architecture: str) -> int:
+    """Where an architecture stands in the thesis's order (classifier_models.ARCHITECTURES); unknown ones last."""
+    known = classifier_models.ARCHITECTURES
+    return known.index(architecture) if architecture in known else len(known)
+
+
 def _points(images: int) -> str:
     return f"{100.0 / images:.1f}" if images else "-"
 
@@ -182,27 +188,23 @@ def comparison_lines(c: dict) -> list:
                   f"{_points(n['val'])} / {_points(n['test'])} / {_points(n['changed'])} points.", ""]
     lines += ["| architecture | scenario generation | val acc | test acc | changed acc | epochs | train s |",
               "|---|---|---|---|---|---|---|"]
-    known = list(classifier_models.ARCHITECTURES)
-
-    def order(r):  # the architectures as the thesis's table lists them, each with scenario generation first
-        return known.index(r["architecture"]) if r["architecture"] in known else len(known), -r["strength"]
-
-    for r in sorted(c["runs"], key=order):
+    for r in sorted(c["runs"], key=lambda r: (_thesis_rank(r["architecture"]), -r["strength"])):
         lines.append(f"| {r['architecture']} | {'with' if r['strength'] > 0 else 'without'} | {_pct(r['val'])} | "
                      f"{_pct(r['test'])} | {_pct(r['changed'])} | {r['epochs']} | {r['seconds']:.0f} |")
-    if c.get("ratios"):
+    changed = comparison_record.ratios(c["runs"])
+    if changed:
         test = comparison_record.ratios(c["runs"], "test")
         lines += ["", "Ratio of accuracies with / without scenario generation (the thesis's Table 4.2 gives the "
                       "test split's):", "",
                   "| architecture | test | changed |", "|---|---|---|"]
-        for arch in sorted(c["ratios"], key=lambda a: known.index(a) if a in known else len(known)):
-            lines.append(f"| {arch} | {_f(test.get(arch), 2)} | {_f(c['ratios'][arch], 2)} |")
+        for arch in sorted(changed, key=_thesis_rank):
+            lines.append(f"| {arch} | {_f(test.get(arch), 2)} | {_f(changed[arch], 2)} |")
     if c.get("latency_ms"):
         lines += ["", f"Inference latency of each architecture's exported classifier, one thread, "
                       f"{c.get('latency_runtime', 'onnxruntime')}; an untrained network of the same graph, since "
                       f"latency does not depend on the weights (`{c.get('latency_command', '')}`):", "",
                   "| architecture | ONNX size | median | p90 | runs |", "|---|---|---|---|---|"]
-        for arch in sorted(c["latency_ms"], key=lambda a: known.index(a) if a in known else len(known)):
+        for arch in sorted(c["latency_ms"], key=_thesis_rank):
             t = c["latency_ms"][arch]
             lines.append(f"| {arch} | {t['onnx_bytes'] / 1e6:.1f} MB | {t['median']:.2f} ms | {t['p90']:.2f} ms | "
                          f"{t['runs']} |")
@@ -258,6 +260,15 @@ def write(folder: Path, m: dict, previous: Path = None, name: str = None) -> Non
     tmp.replace(folder / "REPORT.md")
 
 
+def refresh(folder: Path) -> bool:
+    """Rewrites <folder>/REPORT.md from its manifest.json and side results; False (nothing written) without a manifest."""
+    folder = Path(folder)
+    if not (folder / "manifest.json").exists():
+        return False
+    write(folder, json.loads((folder / "manifest.json").read_text()), name=str(folder))
+    return True
+
+
 def main(argv=None) -> int:
     """Rewrites <folder>/REPORT.md from its manifest.json and side results."""
     import argparse
@@ -265,7 +276,8 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="report", description=main.__doc__)
     p.add_argument("folder", type=Path)
     args = p.parse_args(argv)
-    write(args.folder, json.loads((args.folder / "manifest.json").read_text()), name=str(args.folder))
+    if not refresh(args.folder):
+        p.error(f"{args.folder / 'manifest.json'}: not found")
     print(f"report: {args.folder / 'REPORT.md'}")
     return 0
 
