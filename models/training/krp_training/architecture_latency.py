@@ -11,7 +11,6 @@ what each architecture costs on the robot as well as how accurate it is.
 """
 import argparse
 import json
-import shlex
 import sys
 import tempfile
 import time
@@ -21,6 +20,7 @@ import numpy as np
 import torch
 
 from . import classifier_models, comparison_record, export
+from .command_line import invocation
 
 DEFAULT_RUNS = 200
 DEFAULT_WARMUP = 10
@@ -78,8 +78,7 @@ def main(argv=None) -> int:
             latency[arch] = measure(arch, args.input_px, args.runs, args.warmup, Path(tmp))
             print(json.dumps({arch: latency[arch]}), flush=True)
     record["latency_ms"] = latency
-    record["latency_command"] = ("python -m krp_training.architecture_latency " +
-                                 " ".join(shlex.quote(a) for a in (argv or sys.argv[1:])))
+    record["latency_command"] = invocation("python -m krp_training.architecture_latency", argv)
     record["latency_runtime"] = f"onnxruntime {ort.__version__} (Python), {args.input_px} px input"
     comparison_record.write(args.out, record)
     from . import report

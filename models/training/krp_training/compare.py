@@ -7,7 +7,6 @@ cost minutes per epoch on a CPU; the JSON records the budget used next to every 
 """
 import argparse
 import json
-import shlex
 import subprocess
 import sys
 import tempfile
@@ -17,6 +16,7 @@ import torch
 
 from . import classifier_models, comparison_record, train_classifier
 from .augment import AugmentParams, max_rotation_deg
+from .command_line import invocation
 from .image_folders import read_split
 from .train_map import DEFAULT_BIN_DIR, REPO_ROOT
 
@@ -96,7 +96,7 @@ def _parse_args(argv):
 
 def main(argv=None) -> int:
     args = _parse_args(argv)
-    command = "python -m krp_training.compare " + " ".join(shlex.quote(a) for a in (argv or sys.argv[1:]))
+    command = invocation("python -m krp_training.compare", argv)
     budget = {"world": args.world, "epochs": args.epochs, "samples_per_zone": args.samples_per_zone,
               "train_limit": args.train_limit, "seed": args.seed}
     with tempfile.TemporaryDirectory() as tmp:

@@ -9,7 +9,6 @@ loss_sigma.json and LOSS_SIGMA.md into --out.
 """
 import argparse
 import json
-import shlex
 import subprocess
 import sys
 import tempfile
@@ -17,6 +16,7 @@ from pathlib import Path
 
 from . import export, keypoint_error, train_keypoints
 from .augment import max_rotation_deg
+from .command_line import invocation
 from .train_map import DEFAULT_BIN_DIR, KEYPOINT_TRAIN_IMAGES, REPO_ROOT
 
 EVAL_SPLITS = ("test", "changed")
@@ -88,8 +88,7 @@ def parse_args(argv):
 
 def main(argv=None) -> int:
     args = parse_args(argv)
-    command = "python -m krp_training.compare_loss_sigma " + " ".join(
-        shlex.quote(a) for a in (argv if argv is not None else sys.argv[1:]))
+    command = invocation("python -m krp_training.compare_loss_sigma", argv)
     with tempfile.TemporaryDirectory() as tmp:
         dataset = Path(tmp) / "dataset"
         ds_cmd = [str(args.bin_dir / "krp-dataset"), "--world", args.world, "--world-dir", str(REPO_ROOT / "sim_worlds"),

@@ -6,13 +6,13 @@ Writes orientation_comparison.json and ORIENTATION.md into --out.
 """
 import argparse
 import json
-import shlex
 import sys
 import tempfile
 from pathlib import Path
 
 from . import train_classifier
 from .augment import AugmentParams, max_rotation_deg
+from .command_line import invocation
 from .compare import make_dataset
 from .image_folders import read_split
 from .train_map import DEFAULT_BIN_DIR
@@ -45,7 +45,7 @@ def main(argv=None) -> int:
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--bin-dir", type=Path, default=DEFAULT_BIN_DIR)
     args = p.parse_args(argv)
-    command = "python -m krp_training.compare_orientations " + " ".join(shlex.quote(a) for a in (argv or sys.argv[1:]))
+    command = invocation("python -m krp_training.compare_orientations", argv)
     runs = []
     with tempfile.TemporaryDirectory() as tmp:
         for orientation in ORIENTATIONS:

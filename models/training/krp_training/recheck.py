@@ -9,7 +9,6 @@ Both exported ONNX files are measured, as the robot runs them.
 """
 import argparse
 import json
-import shlex
 import shutil
 import subprocess
 import sys
@@ -21,6 +20,7 @@ from tqdm import tqdm
 
 from . import keypoint_error, manifest as manifest_io, train_keypoints, zone_border
 from .cli_help import DefaultsHelpFormatter
+from .command_line import invocation, quoted
 from .image_folders import read_split
 from .recheck_report import write_report
 
@@ -103,7 +103,7 @@ def dataset_command(m: dict, args, source: list, landmarks_yaml: Path, dataset_d
 def shown(cmd: list) -> str:
     """The command as the report prints it: paths inside the repository relative to its root."""
     root = str(REPO_ROOT) + "/"
-    return " ".join(shlex.quote(c[len(root):] if c.startswith(root) else c) for c in cmd)
+    return quoted(c[len(root):] if c.startswith(root) else c for c in cmd)
 
 
 def _same(have, want) -> bool:
@@ -186,7 +186,7 @@ def measure(models: Path, m: dict, dataset_dir: Path, work: Path) -> dict:
 
 def main(argv=None) -> int:
     args = parse_args(argv)
-    command = "krp-recheck-models " + " ".join(shlex.quote(a) for a in (argv if argv is not None else sys.argv[1:]))
+    command = invocation("krp-recheck-models", argv)
     models = Path(args.models)
     try:
         m = json.loads((models / "manifest.json").read_text())
@@ -215,7 +215,7 @@ def main(argv=None) -> int:
         write_landmarks_yaml(m, landmarks_yaml)
         dataset_dir = work / "dataset"
         cmd = dataset_command(m, args, source, landmarks_yaml, dataset_dir)
-        print("[krp-recheck-models] $ " + " ".join(shlex.quote(c) for c in cmd), file=sys.stderr, flush=True)
+        print("[krp-recheck-models] $ " + quoted(cmd), file=sys.stderr, flush=True)
         subprocess.run(cmd, check=True)
         card = json.loads((dataset_dir / "dataset_card.json").read_text())
         check_card(m, card)

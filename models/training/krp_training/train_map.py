@@ -7,7 +7,6 @@ never leaves a half-written model folder where a robot would look for one.
 """
 import argparse
 import json
-import shlex
 import shutil
 import subprocess
 import sys
@@ -21,6 +20,7 @@ from . import (classifier_models, export, keypoint_error, machine_speed, manifes
                train_keypoints, zone_border)
 from .augment import AugmentParams, max_rotation_deg
 from .cli_help import DefaultsHelpFormatter
+from .command_line import invocation, quoted
 from .image_folders import SPLITS, read_split
 from .stage_timer import StageTimer, duration
 
@@ -99,7 +99,7 @@ def parse_args(argv):
 
 
 def _run(cmd):
-    print("[krp-train-map] $ " + " ".join(shlex.quote(str(c)) for c in cmd), file=sys.stderr, flush=True)
+    print("[krp-train-map] $ " + quoted(cmd), file=sys.stderr, flush=True)
     subprocess.run([str(c) for c in cmd], check=True)
 
 
@@ -160,7 +160,7 @@ def _map_path(args) -> Path:
 
 def main(argv=None) -> int:
     args = parse_args(argv)
-    command = "krp-train-map " + " ".join(shlex.quote(a) for a in (argv if argv is not None else sys.argv[1:]))
+    command = invocation("krp-train-map", argv)
     device = _device(args.device)
     name = args.world or Path(args.map).stem
     out = Path(args.out)
