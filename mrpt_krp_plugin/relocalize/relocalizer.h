@@ -91,13 +91,14 @@ struct RelocalizerParams {
   CorrelativeMatcherParams matcher;  ///< for the zone search and the cross-check
   /// The zone search and the cross-check try only headings within this of the four that line the
   /// scan's walls up with the map's (MatchRequest::wall_heading_window_deg), when both have a
-  /// clear wall direction [deg]. 0: every heading. 5: on 250 simulated first scans the true
-  /// heading lay within 2.3 deg of a window's centre (reports/matcher_speed, clutter and the 3.5 m
-  /// lidar included), and over 290 office, warehouse, large_floor and cluttered-office trials the
-  /// scan to prior fell 1.4-3.9x with one outcome changed, in a warehouse trial whose scans cannot
-  /// tell the truth from another place (docs/results.md, "Headings from the walls"). The real
+  /// clear wall direction [deg]. 0: every heading. On 250 simulated first scans the true heading
+  /// lay within 2.3 deg of a window's centre (reports/matcher_speed, clutter and the 3.5 m lidar
+  /// included), so 3 keeps a margin over that and over half the matcher's 1 deg step. 5 deg
+  /// windows cut the scan to prior 1.4-3.9x against every heading; 3 deg ones cut the warehouse's
+  /// by another fifth, with every outcome of 560 trials over six worlds and lidars as with 5 but
+  /// one, which the scans cannot decide (docs/results.md, "Narrower heading windows"). The real
   /// maps tried have no clear wall direction and keep every heading.
-  double wall_heading_window_deg = 5.0;
+  double wall_heading_window_deg = 3.0;
   OnnxRuntimeParams onnx;
   /// A scan whose field of view differs from the manifest's lidar by more than this is refused:
   /// the models never saw such submaps [deg].
