@@ -16,7 +16,7 @@ from pathlib import Path
 
 from . import export, keypoint_error, train_keypoints
 from .augment import max_rotation_deg
-from .command_line import invocation
+from .command_line import invocation, quoted
 from .train_map import DEFAULT_BIN_DIR, KEYPOINT_TRAIN_IMAGES, REPO_ROOT
 
 EVAL_SPLITS = ("test", "changed")
@@ -115,7 +115,7 @@ def main(argv=None) -> int:
                 run[s]["keypoint_error"] = keypoint_error.mean_keypoint_error(onnx, dataset, s, img_px, res_m, k, work,
                                                                               zone_names=card["zones"])
             runs.append(run)
-    result = {"world": args.world, "command": command, "dataset_command": " ".join(["krp-dataset"] + ds_cmd[1:]),
+    result = {"world": args.world, "command": command, "dataset_command": quoted(["krp-dataset"] + ds_cmd[1:]),
               "train_images": n_train, "epochs": args.epochs, "seed": args.seed, "runs": runs}
     args.out.mkdir(parents=True, exist_ok=True)
     (args.out / "loss_sigma.json").write_text(json.dumps(result, indent=1))
