@@ -2,8 +2,8 @@
 # Regenerates reports/matcher_speed (issue 4): the correlative matcher's bounds that stop reading
 # returns once a node cannot win, against bounds that read every return, side by side on the same
 # simulated first scans (krp-bench-matcher; both must answer alike); then every heading against
-# the wall-heading windows (MatchRequest::wall_heading_window_deg, 5 deg: the relocalizer's default
-# until it became 3 deg, whose runs are in reports/heading_window), on the same scans; then
+# the wall-heading windows (MatchRequest::wall_heading_window_deg, the relocalizer's default: 3 deg;
+# the 5 deg of before are compared with 3 in reports/heading_window), on the same scans; then
 # the whole-map search's second solution searched from min_score against warm-started
 # (CorrelativeMatcherParams::warm_start_later_solutions), on the same scans. Worlds office_two_zone,
 # warehouse and large_floor with their default lidars, and, when ../shared/data holds it, the map

@@ -10,6 +10,7 @@
 
 #include "mrpt_krp_plugin/filter/look_alike_guard.h"
 #include "mrpt_krp_plugin/relocalize/correlative_matcher.h"
+#include "mrpt_krp_plugin/relocalize/relocalizer.h"
 #include "mrpt_krp_plugin/sim/lidar_profile.h"
 #include "mrpt_krp_plugin/sim/trial.h"
 
@@ -29,8 +30,9 @@ struct MatcherSpeedParams {
   /// The look-alike search as the filter's guard runs it (its margin, node budget, see-through charge).
   LookAlikeGuardParams guard;
   TrialParams trial;  ///< where the scans come from (clutter, scanner noise)
-  /// The windows of the wall-heading comparison [deg], for both searches (the guard's too).
-  double wall_heading_window_deg = 5.0;
+  /// The windows of the wall-heading comparison [deg], for both searches (the guard's too): by
+  /// default the relocalizer's, so that the report measures what the robot runs.
+  double wall_heading_window_deg = RelocalizerParams{}.wall_heading_window_deg;
 };
 
 /// One kind of search over every scan, in a baseline setting and a variant.
