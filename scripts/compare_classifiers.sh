@@ -3,12 +3,22 @@
 # leave-one-zone-out check and each compared architecture's inference latency for a world;
 # writes <models>/comparison.json and refreshes REPORT.md.
 #   scripts/compare_classifiers.sh office_two_zone [extra options of krp_training.compare]
+# The model folder is models/WORLD unless the options give --out (a world's models for another
+# lidar: --lidar lds01 --out models/office_two_zone_lds01).
 # With --add, the architectures given are added to the existing comparison (same budget and
 # datasets, checked), so that the thesis's large networks can be run one at a time.
 set -euo pipefail
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 WORLD="${1:?usage: $0 WORLD [options]}"
 shift
+OUT="models/$WORLD"
+args=("$@")
+for ((i = 0; i < ${#args[@]}; ++i)); do
+  case "${args[i]}" in
+    --out) OUT="${args[i + 1]:?--out needs a folder}" ;;
+    --out=*) OUT="${args[i]#--out=}" ;;
+  esac
+done
 cd "$REPO_ROOT"
-"$REPO_ROOT/.venv/bin/python" -m krp_training.compare --world "$WORLD" --out "models/$WORLD" "$@"
-exec "$REPO_ROOT/.venv/bin/python" -m krp_training.architecture_latency --out "models/$WORLD"
+"$REPO_ROOT/.venv/bin/python" -m krp_training.compare --world "$WORLD" --out "$OUT" "$@"
+exec "$REPO_ROOT/.venv/bin/python" -m krp_training.architecture_latency --out "$OUT"

@@ -22,12 +22,31 @@ from .train_map import DEFAULT_BIN_DIR, REPO_ROOT
 
 
 def make_dataset(bin_dir: Path, world: str, strength: float, per_zone: int, seed: int, out: Path,
-             orientation: str = "wall_axes") -> Path:
-    subprocess.run([str(bin_dir / "krp-dataset"), "--world", world, "--world-dir", str(REPO_ROOT / "sim_worlds"),
-                    "--out", str(out), "--samples-per-zone", str(per_zone), "--changed-per-zone",
-                    str(max(10, per_zone // 10)), "--strength", str(strength), "--seed", str(seed),
-                    "--orientation", orientation], check=True, stdout=subprocess.DEVNULL)
+                 orientation: str = "wall_axes", lidar: str = None) -> Path:
+    """krp-dataset for `world`, with `lidar` (a built-in profile name or a profile file; None: the
+    world's default)."""
+    cmd = [str(bin_dir / "krp-dataset"), "--world", world, "--world-dir", str(REPO_ROOT / "sim_worlds"),
+           "--out", str(out), "--samples-per-zone", str(per_zone), "--changed-per-zone",
+           str(max(10, per_zone // 10)), "--strength", str(strength), "--seed", str(seed),
+           "--orientation", orientation]
+    if lidar:
+        cmd += ["--lidar", str(lidar)]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     return out
+
+
+def lidar_mismatch(models_dir: Path, card: dict):
+    """Why the comparison's datasets do not suit the models in `models_dir` (their manifest names
+    another lidar), or None: a table beside a model must be of the lidar it was trained for."""
+    manifest_path = Path(models_dir) / "manifest.json"
+    if not manifest_path.exists():
+        return None
+    wanted = json.loads(manifest_path.read_text()).get("lidar", {}).get("name")
+    got = card.get("lidar", {}).get("name")
+    if wanted and got != wanted:
+        return (f"the models in {models_dir} were trained for lidar '{wanted}', the comparison's datasets were made "
+                f"for '{got}': pass --lidar {wanted}")
+    return None
 
 
 def _limit(data, n: int, seed: int):
@@ -81,6 +100,9 @@ def _parse_args(argv):
     p.add_argument("--train-limit", type=int, default=0, help="train on at most this many images (0 = all)")
     p.add_argument("--epochs", type=int, default=10)
     p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--lidar", help="lidar profile for the datasets: a built-in name (lds01, omni_12m, safety_270) or "
+                                   "a profile file (default: the world's); must be the one the models in --out "
+                                   "were trained for")
     p.add_argument("--bin-dir", type=Path, default=DEFAULT_BIN_DIR)
     p.add_argument("--skip-loo", action="store_true", help="skip the leave-one-zone-out check")
     p.add_argument("--add", action="store_true",
@@ -99,9 +121,16 @@ def main(argv=None) -> int:
     command = invocation("python -m krp_training.compare", argv)
     budget = {"world": args.world, "epochs": args.epochs, "samples_per_zone": args.samples_per_zone,
               "train_limit": args.train_limit, "seed": args.seed}
+    if args.lidar:  # only when given, so the records made before --lidar existed still take --add runs
+        budget["lidar"] = args.lidar
     with tempfile.TemporaryDirectory() as tmp:
         dirs = {s: make_dataset(args.bin_dir, args.world, s, args.samples_per_zone, args.seed,
-                                Path(tmp) / f"strength{s}") for s in comparison_record.STRENGTHS}
+                                Path(tmp) / f"strength{s}", lidar=args.lidar) for s in comparison_record.STRENGTHS}
+        card = json.loads((dirs[1.0] / "dataset_card.json").read_text())
+        mismatch = lidar_mismatch(args.out, card)
+        if mismatch:
+            print(f"compare: {mismatch}", file=sys.stderr)
+            return 2
         digests = {_strength_key(s): comparison_record.dataset_digest(d) for s, d in dirs.items()}
         try:
             record = comparison_record.start(budget, digests, command,
@@ -109,7 +138,6 @@ def main(argv=None) -> int:
         except comparison_record.ComparisonMismatch as e:
             print(f"compare: {args.out / comparison_record.FILE_NAME}: {e}", file=sys.stderr)
             return 2
-        card = json.loads((dirs[1.0] / "dataset_card.json").read_text())
         zones = card["zones"]
         augment = AugmentParams(max_rotation_deg=max_rotation_deg(card))
         sets = {s: {split: read_split(d, split, zones) for split in ("train", "val", "test", "changed")}
