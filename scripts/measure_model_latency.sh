@@ -8,9 +8,12 @@ FOLDER="${1:?usage: $0 MODEL_FOLDER}"
 RUNS="${KRP_LATENCY_RUNS:-300}"
 APPS="$REPO_ROOT/build/mrpt_krp_plugin/apps"
 world="$("$REPO_ROOT/.venv/bin/python" -c "import json,sys; print(json.load(open(sys.argv[1]))['world'])" "$FOLDER/manifest.json")"
+# The submap is rendered for the models' own lidar: a user's profile file goes with them.
+lidar="$("$REPO_ROOT/.venv/bin/python" -c "import json,sys; print(json.load(open(sys.argv[1]))['lidar']['name'])" "$FOLDER/manifest.json")"
+[[ -f "$FOLDER/lidar.yaml" ]] && lidar="$FOLDER/lidar.yaml"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
-"$APPS/krp-dataset" --world "$world" --world-dir "$REPO_ROOT/sim_worlds" --out "$tmp/d" --samples-per-zone 4 \
+"$APPS/krp-dataset" --world "$world" --world-dir "$REPO_ROOT/sim_worlds" --lidar "$lidar" --out "$tmp/d" --samples-per-zone 4 \
     --changed-per-zone 1 --seed 3 >/dev/null 2>&1
 occ="$(find "$tmp/d/classifier/train" -name '*.png' | sort | head -n1)"
 sdt="$(find "$tmp/d/keypoints/images/train" -name '*.png' | sort | head -n1)"
