@@ -70,7 +70,7 @@ static int run(int argc, char** argv) {
   const std::string out = args.get("out");
   std::filesystem::create_directories(out);
   std::ostringstream md;
-  md << "# Correlative matcher: bounds that stop early, wall headings, warm starts\n\nCommand:\n\n```\n" << args.commandLine() << "\n```\n\n"
+  md << "# Correlative matcher: bounds that stop early, wall headings, warm starts, roots across headings\n\nCommand:\n\n```\n" << args.commandLine() << "\n```\n\n"
      << "Map `" << map_path << "` (" << krp::freeAreaM2(*map.grid) << " m^2 free), lidar " << lidar_name << " ("
      << lidar.fov_rad * 180.0 / M_PI << " deg, " << lidar.beams << " beams, " << lidar.max_range_m << " m). Each scan is the first "
      << "of a simulated trial (clutter drawn into the simulation only) and is searched by two matchers built alike "
@@ -98,7 +98,15 @@ static int run(int argc, char** argv) {
      << "search's setting). Taking turns at going first. *Scores differ* counts scans whose solutions score "
      << "differently, one by one: it must be 0. *Places differ* counts those whose solutions stand elsewhere: only "
      << "where two places score exactly alike, a tie broken in another order.\n\n"
-     << krp::warmStartSpeedMarkdown(rows.warm_start);
+     << krp::warmStartSpeedMarkdown(rows.warm_start) << "\n## Roots across headings\n\n"
+     << "The same scans, bounds stopping early and later solutions warm-started in both: the whole-map search "
+     << "heading after heading, against the coarsest nodes of every heading visited in one order, highest bound "
+     << "first (`CorrelativeMatcherParams::roots_across_headings`), so that the best place tends to be reached "
+     << "sooner and prunes the other headings; over every heading, then over the wall-heading windows. Taking turns "
+     << "at going first. *Scores differ* counts scans whose solutions score differently, one by one: it must be 0. "
+     << "*Places differ* counts those whose solutions stand elsewhere: only where two places score exactly alike, a "
+     << "tie broken in another order.\n\n"
+     << krp::acrossHeadingsSpeedMarkdown(rows.across_headings);
   krp::writeFileAtomically(out + "/REPORT.md", md.str());
   std::cout << md.str() << "\nReport: " << out << "/REPORT.md\n";
   for (const auto& r : rows.stop_early)
@@ -111,6 +119,12 @@ static int run(int argc, char** argv) {
     if (r.scores_differing > 0) {
       std::cerr << "krp-bench-matcher: the " << r.search << " search scored " << r.scores_differing
                 << " scan(s) differently with its later solutions warm-started\n";
+      return 1;
+    }
+  for (const auto& r : rows.across_headings)
+    if (r.scores_differing > 0) {
+      std::cerr << "krp-bench-matcher: the " << r.search << " search scored " << r.scores_differing
+                << " scan(s) differently with its roots across headings\n";
       return 1;
     }
   return 0;

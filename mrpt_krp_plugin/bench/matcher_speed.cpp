@@ -54,23 +54,27 @@ struct Answer {
   }
 };
 
-/// One setting of stop_bound_early, of the wall-heading window and of warm_start_later_solutions:
-/// its matcher and the guard searching with it.
+/// One setting of stop_bound_early, of the wall-heading window, of warm_start_later_solutions and
+/// of roots_across_headings: its matcher and the guard searching with it.
 struct Searcher {
   std::shared_ptr<const CorrelativeMatcher> matcher;
   LookAlikeGuard guard;
   MatchRequest whole_map;  ///< the defaults, with the setting's window
 
   Searcher(const mrpt::maps::COccupancyGridMap2D& map, CorrelativeMatcherParams params, bool stop_early,
-           LookAlikeGuardParams guard_params, double wall_heading_window_deg, bool warm_start = true)
-      : matcher(std::make_shared<CorrelativeMatcher>(map, withSettings(params, stop_early, warm_start))),
+           LookAlikeGuardParams guard_params, double wall_heading_window_deg, bool warm_start = true,
+           bool roots_across_headings = true)
+      : matcher(std::make_shared<CorrelativeMatcher>(
+            map, withSettings(params, stop_early, warm_start, roots_across_headings))),
         guard(matcher, withWindow(guard_params, wall_heading_window_deg)) {
     whole_map.wall_heading_window_deg = wall_heading_window_deg;
   }
 
-  static CorrelativeMatcherParams withSettings(CorrelativeMatcherParams p, bool stop_early, bool warm_start) {
+  static CorrelativeMatcherParams withSettings(CorrelativeMatcherParams p, bool stop_early, bool warm_start,
+                                               bool roots_across_headings) {
     p.stop_bound_early = stop_early;
     p.warm_start_later_solutions = warm_start;
+    p.roots_across_headings = roots_across_headings;
     return p;
   }
   static LookAlikeGuardParams withWindow(LookAlikeGuardParams p, double window_deg) {
@@ -167,14 +171,18 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
   const Searcher windowed(map, params.matcher, true, params.guard, params.wall_heading_window_deg);
   const Searcher cold(map, params.matcher, true, params.guard, 0.0, false);
   const Searcher cold_windowed(map, params.matcher, true, params.guard, params.wall_heading_window_deg, false);
+  const Searcher per_heading(map, params.matcher, true, params.guard, 0.0, true, false);
+  const Searcher per_heading_windowed(map, params.matcher, true, params.guard, params.wall_heading_window_deg, true, false);
   const MclParams filter;  // the guard charges see-through beams as the filter does
   const SeeThroughPenalty see_through(map, filter.sensor, filter.see_through);
   TrialParams trial_params = params.trial;
   trial_params.steps = 0;  // the first scan is all a search sees
   MatcherSpeedRows rows;
-  Tally whole_map, look_alike, whole_map_windowed, look_alike_windowed, warm_every, warm_windowed;
+  Tally whole_map, look_alike, whole_map_windowed, look_alike_windowed, warm_every, warm_windowed, across_every,
+      across_windowed;
   whole_map_windowed.same_nodes = look_alike_windowed.same_nodes = false;  // fewer headings, fewer nodes
   warm_every.same_nodes = warm_windowed.same_nodes = false;                // a warm start prunes more
+  across_every.same_nodes = across_windowed.same_nodes = false;            // so does an earlier best
   for (int i = 0; i < params.scans; ++i) {
     const auto trial = generateTrial(map, lidar, trial_params, params.seed + static_cast<uint64_t>(i));
     const auto& scan = *trial.scans.front();
@@ -202,11 +210,18 @@ MatcherSpeedRows measureMatcherSpeed(const mrpt::maps::COccupancyGridMap2D& map,
     warm_every.add(cold_whole, warm_whole);
     const auto [cold_windowed_whole, warm_windowed_whole] = sideBySide(cold_windowed, windowed, first, whole);
     warm_windowed.add(cold_windowed_whole, warm_windowed_whole);
+    const auto [per_heading_whole, across_whole] = sideBySide(per_heading, stopping, first, whole);
+    across_every.add(per_heading_whole, across_whole);
+    const auto [per_heading_windowed_whole, across_windowed_whole] =
+        sideBySide(per_heading_windowed, windowed, first, whole);
+    across_windowed.add(per_heading_windowed_whole, across_windowed_whole);
     if (progress) progress();
   }
   rows.stop_early = {whole_map.row("whole map"), look_alike.row("look-alike check")};
   rows.wall_headings = {whole_map_windowed.row("whole map"), look_alike_windowed.row("look-alike check")};
   rows.warm_start = {warm_every.row("whole map, every heading"), warm_windowed.row("whole map, wall headings")};
+  rows.across_headings = {across_every.row("whole map, every heading"),
+                          across_windowed.row("whole map, wall headings")};
   return rows;
 }
 
@@ -254,6 +269,14 @@ std::string warmStartSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
                             "median ms, each solution from min_score | median ms, later solutions warm-started | "
                             "speed-up (median of per-scan ratios) | speed-up (total) | median nodes, from min_score | "
                             "median nodes, warm-started | scores differ | places differ",
+                            [](const MatcherSpeedRow& r) { return std::pair{r.scores_differing, r.differing}; });
+}
+
+std::string acrossHeadingsSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows) {
+  return comparisonMarkdown(rows,
+                            "median ms, heading after heading | median ms, roots across headings | speed-up (median "
+                            "of per-scan ratios) | speed-up (total) | median nodes, heading after heading | median "
+                            "nodes, across headings | scores differ | places differ",
                             [](const MatcherSpeedRow& r) { return std::pair{r.scores_differing, r.differing}; });
 }
 

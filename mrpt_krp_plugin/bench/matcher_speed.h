@@ -20,8 +20,9 @@ namespace krp {
 /// first scans, each run with CorrelativeMatcherParams::stop_bound_early off and on, and (bounds
 /// stopping early) over every heading and over the wall-heading windows
 /// (MatchRequest::wall_heading_window_deg), and with the later solutions of a search started cold
-/// and warm (CorrelativeMatcherParams::warm_start_later_solutions), side by side on the same scan (alternating which goes
-/// first), so that the ratios survive a noisy machine.
+/// and warm (CorrelativeMatcherParams::warm_start_later_solutions), and heading after heading and
+/// across headings (CorrelativeMatcherParams::roots_across_headings), side by side on the same scan
+/// (alternating which goes first), so that the ratios survive a noisy machine.
 struct MatcherSpeedParams {
   int scans = 30;     ///< first scans of simulated trials, one per trial seed
   uint64_t seed = 1;  ///< trial i uses seed + i
@@ -62,6 +63,10 @@ struct MatcherSpeedRows {
   /// warm-started (CorrelativeMatcherParams::warm_start_later_solutions), over every heading, then
   /// over the wall-heading windows. Scores must not differ; places only where two tie.
   std::vector<MatcherSpeedRow> warm_start;
+  /// The depth-first search heading after heading (baseline) against the roots of every heading
+  /// in one order (CorrelativeMatcherParams::roots_across_headings), over every heading, then over
+  /// the wall-heading windows. Scores must not differ; places only where two tie.
+  std::vector<MatcherSpeedRow> across_headings;
   /// Scans whose headings the windows narrowed (both wall directions clear), of all scans.
   int narrowed_scans = 0, scans = 0;
   /// Over the narrowed scans: the true heading's largest distance to the nearest window centre
@@ -80,5 +85,7 @@ std::string matcherSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows);
 std::string wallHeadingSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows);
 /// The warm-start rows as a Markdown table.
 std::string warmStartSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows);
+/// The roots-across-headings rows as a Markdown table.
+std::string acrossHeadingsSpeedMarkdown(const std::vector<MatcherSpeedRow>& rows);
 
 }  // namespace krp

@@ -297,39 +297,51 @@ std::optional<MatchSolution> CorrelativeMatcher::searchDepthFirst(const std::vec
   MatchSolution best = start.value_or(MatchSolution{{}, bar});
   bool found = start.has_value();
   const auto higher = [](const Node& a, const Node& b) { return a.bound > b.bound; };
-  // The tail sums of the roots, and of the children of the node being expanded at each level:
-  // depth-first, one node per level is expanded at a time.
-  TailSums root_tails;
+  // The tail sums of the roots of every heading, and of the children of the node being expanded
+  // at each level: depth-first, one node per level is expanded at a time.
+  std::vector<TailSums> root_tails(rotations.size());
   std::vector<TailSums> child_tails(static_cast<size_t>(std::max(params_.depth, 1)));
-  for (const auto& rot : rotations) {
-    // Every root's true bound: pruning some would change how the sort orders equal bounds, and
-    // with it which of two equally good places is found first.
-    root_tails.clear();
-    auto top = roots(rot, in_region, kNoCutoff, root_tails);
-    std::sort(top.begin(), top.end(), higher);
-    // Best child first; a node whose bound cannot beat the best is pruned.
-    const auto visit = [&](const auto& self, const Node& n, const TailSums& n_tails) -> void {
-      if (n.bound <= best.score) return;
-      if (n.level == 0) {
-        if (!candidate(n.cx, n.cy)) return;
-        best = {poseOf(n.cx, n.cy, rot.phi), n.bound};
-        found = true;
-        if (improvements) improvements->push_back({best, n.cx, n.cy});
-        return;
-      }
-      std::array<Node, 4> below;
-      // Stable, so a pruned child (sorted last, then skipped) leaves the others' order as it was.
-      auto& tails = child_tails[static_cast<size_t>(n.level - 1)];
-      tails.clear();
-      const size_t count = children(rot, n, n_tails, in_region, best.score, tails, below);
-      for (size_t i = 1; i < count; ++i)
-        for (size_t j = i; j > 0 && higher(below[j], below[j - 1]); --j) std::swap(below[j], below[j - 1]);
-      for (size_t i = 0; i < count; ++i) self(self, below[i], tails);
-    };
-    for (const auto& r : top) {
-      if (r.bound <= best.score) break;
-      visit(visit, r, root_tails);
+  // Best child first; a node whose bound cannot beat the best is pruned.
+  const auto visit = [&](const auto& self, const Rotation& rot, const Node& n, const TailSums& n_tails) -> void {
+    if (n.bound <= best.score) return;
+    if (n.level == 0) {
+      if (!candidate(n.cx, n.cy)) return;
+      best = {poseOf(n.cx, n.cy, rot.phi), n.bound};
+      found = true;
+      if (improvements) improvements->push_back({best, n.cx, n.cy});
+      return;
     }
+    std::array<Node, 4> below;
+    // Stable, so a pruned child (sorted last, then skipped) leaves the others' order as it was.
+    auto& tails = child_tails[static_cast<size_t>(n.level - 1)];
+    tails.clear();
+    const size_t count = children(rot, n, n_tails, in_region, best.score, tails, below);
+    for (size_t i = 1; i < count; ++i)
+      for (size_t j = i; j > 0 && higher(below[j], below[j - 1]); --j) std::swap(below[j], below[j - 1]);
+    for (size_t i = 0; i < count; ++i) self(self, rot, below[i], tails);
+  };
+  // Every root's true bound: pruning some would change how the sort orders equal bounds, and with
+  // it which of two equally good places is found first.
+  struct Root {
+    Node node;
+    size_t rotation;
+  };
+  std::vector<Root> order;
+  for (size_t k = 0; k < rotations.size(); ++k) {
+    auto top = roots(rotations[k], in_region, kNoCutoff, root_tails[k]);
+    std::sort(top.begin(), top.end(), higher);
+    for (const auto& n : top) order.push_back({n, k});
+  }
+  // Stable: roots of equal bound keep the heading-after-heading order.
+  if (params_.roots_across_headings)
+    std::stable_sort(order.begin(), order.end(), [&](const Root& a, const Root& b) { return higher(a.node, b.node); });
+  for (const auto& r : order) {
+    // Across headings every root left bounds no higher; heading after heading, only its heading's.
+    if (r.node.bound <= best.score) {
+      if (params_.roots_across_headings) break;
+      continue;
+    }
+    visit(visit, rotations[r.rotation], r.node, root_tails[r.rotation]);
   }
   if (!found) return std::nullopt;
   return best;

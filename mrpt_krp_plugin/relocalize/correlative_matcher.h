@@ -47,6 +47,12 @@ struct CorrelativeMatcherParams {
   /// where two places score exactly alike. false starts each from min_score, for the side-by-side
   /// benchmark (krp-bench-matcher).
   bool warm_start_later_solutions = true;
+  /// The depth-first search visits the coarsest nodes of every heading in one order, highest
+  /// bound first, instead of heading after heading: the best place tends to be reached sooner,
+  /// and from then on it prunes the other headings. The answers' scores are the same either way;
+  /// their poses too but where two places score exactly alike. false goes heading after heading,
+  /// for the side-by-side benchmark (krp-bench-matcher).
+  bool roots_across_headings = true;
   /// How the map's and a scan's wall directions are measured, for a request's
   /// wall_heading_window_deg.
   WallAxesParams wall_axes;
