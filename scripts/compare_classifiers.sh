@@ -11,7 +11,7 @@ set -euo pipefail
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 WORLD="${1:?usage: $0 WORLD [options]}"
 shift
-OUT="models/$WORLD"
+OUT=""
 args=("$@")
 for ((i = 0; i < ${#args[@]}; ++i)); do
   case "${args[i]}" in
@@ -19,6 +19,8 @@ for ((i = 0; i < ${#args[@]}; ++i)); do
     --out=*) OUT="${args[i]#--out=}" ;;
   esac
 done
+# Given once, so that the command the comparison records reads as it was meant.
+[[ -z "$OUT" ]] && OUT="models/$WORLD" && args=(--out "$OUT" "${args[@]}")
 cd "$REPO_ROOT"
-"$REPO_ROOT/.venv/bin/python" -m krp_training.compare --world "$WORLD" --out "$OUT" "$@"
+"$REPO_ROOT/.venv/bin/python" -m krp_training.compare --world "$WORLD" "${args[@]}"
 exec "$REPO_ROOT/.venv/bin/python" -m krp_training.architecture_latency --out "$OUT"

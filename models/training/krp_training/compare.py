@@ -124,8 +124,13 @@ def main(argv=None) -> int:
     if args.lidar:  # only when given, so the records made before --lidar existed still take --add runs
         budget["lidar"] = args.lidar
     with tempfile.TemporaryDirectory() as tmp:
-        dirs = {s: make_dataset(args.bin_dir, args.world, s, args.samples_per_zone, args.seed,
-                                Path(tmp) / f"strength{s}", lidar=args.lidar) for s in comparison_record.STRENGTHS}
+        try:
+            dirs = {s: make_dataset(args.bin_dir, args.world, s, args.samples_per_zone, args.seed,
+                                    Path(tmp) / f"strength{s}", lidar=args.lidar) for s in comparison_record.STRENGTHS}
+        except (subprocess.CalledProcessError, FileNotFoundError) as e:
+            print(f"compare: krp-dataset could not make the datasets ({e}); its message, if any, is above. Nothing "
+                  "was written.", file=sys.stderr)
+            return 2
         card = json.loads((dirs[1.0] / "dataset_card.json").read_text())
         mismatch = lidar_mismatch(args.out, card)
         if mismatch:

@@ -54,3 +54,17 @@ def test_compare_refuses_before_training_when_the_lidar_is_not_the_models(tmp_pa
     assert code == 2
     assert "--lidar lds01" in capsys.readouterr().err
     assert sorted(p.name for p in folder.iterdir()) == ["manifest.json"]
+
+
+def test_a_dataset_that_cannot_be_made_is_a_clear_error_and_writes_nothing(tmp_path, capsys):
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir()
+    app = bin_dir / "krp-dataset"
+    app.write_text("#!/bin/sh\necho 'krp-dataset: error: no such world' >&2\nexit 2\n")
+    app.chmod(app.stat().st_mode | stat.S_IEXEC)
+    out = tmp_path / "models"
+    code = compare.main(["--world", "nosuchworld", "--out", str(out), "--architectures", "compact",
+                         "--bin-dir", str(bin_dir)])
+    assert code == 2
+    assert "could not make the datasets" in capsys.readouterr().err
+    assert not out.exists()
