@@ -6,7 +6,7 @@
 # seeded-no-guard without it.
 # 20 trials per world, 360 deg 12 m lidar, seed 1. uniform-mcl runs on office_two_zone only: on the
 # warehouse (92,000 particles per initialization) it alone would take most of an hour.
-# (~20 min on 2 cores.)
+# (~3 min on 2 idle cores.)
 # Usage: scripts/bench_kidnap.sh [extra krp-bench flags]   (build first with scripts/build.sh)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"

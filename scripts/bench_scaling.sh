@@ -3,7 +3,7 @@
 # area grows, office_two_zone (713 m^2) -> warehouse (2,313 m^2) -> large_floor (5,217 m^2), for
 # uniform MCL (particles by density), the global-matcher relocalizer seeding the filter, and the
 # seeded method with each world's shipped models (models/<world>).
-# 10 trials, 5 steps, 360 deg 12 m lidar, seed 3 (~15 min on 2 cores). The report's last section
+# 10 trials, 5 steps, 360 deg 12 m lidar, seed 3 (~3 min on 2 idle cores). The report's last section
 # has the table and scaling.png.
 # Usage: scripts/bench_scaling.sh [extra krp-bench flags]   (build first with scripts/build.sh)
 set -euo pipefail
