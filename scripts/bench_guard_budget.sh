@@ -13,7 +13,7 @@
 #                  nodes of search (--guard-nodes-per-update): a longer search pauses and goes on
 #                  at the next updates, so no update stalls (the ROS node's default is 500,000).
 # Warehouse: 30 trials, every setting. Office (100 trials): 1M settled, the default and 500k per update.
-# 360 deg 12 m lidar, 10 updates, seed 1, as reports/relocalization (~35 min on 2 cores).
+# 360 deg 12 m lidar, 10 updates, seed 1, as reports/relocalization (~20 min on 2 idle cores).
 # Usage: scripts/bench_guard_budget.sh   (build first with scripts/build.sh)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
