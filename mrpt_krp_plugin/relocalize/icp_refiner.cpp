@@ -16,6 +16,13 @@ IcpRefiner::IcpRefiner(const mrpt::maps::COccupancyGridMap2D& map, IcpRefinePara
   cells.min_occupied_occupancy = params_.min_occupancy;
   for (const auto& c : maskedCells(occupiedMask(map, cells)))
     map_points_.insertPoint(static_cast<float>(map.idx2x(c.x)), static_cast<float>(map.idx2y(c.y)), 0.0f);
+  // MRPT builds a points map's k-d tree on its first query. Query it now, so that the tree is
+  // built with the map, not inside the first relocalization after start-up: the scan that matters
+  // most (35 ms more than the next ones on the warehouse map when it was built there).
+  if (map_points_.size() > 0) {
+    float x = 0, y = 0, distance_sq = 0;
+    map_points_.kdTreeClosestPoint2D(0.0f, 0.0f, x, y, distance_sq);
+  }
 }
 
 mrpt::math::TPose2D IcpRefiner::refine(const mrpt::obs::CObservation2DRangeScan& scan,

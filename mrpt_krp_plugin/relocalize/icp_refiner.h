@@ -19,7 +19,8 @@ struct IcpRefineParams {
 };
 
 /// Refines a pose hypothesis by ICP of the scan against the map's obstacle cells (MRPT's CICP,
-/// classic point-to-point). The reference point cloud is built once.
+/// classic point-to-point). The reference point cloud and its k-d tree are built once, by the
+/// constructor (a copy would build its tree again on its first refine: MRPT's copies drop it).
 class IcpRefiner {
  public:
   IcpRefiner(const mrpt::maps::COccupancyGridMap2D& map, IcpRefineParams params = {});
