@@ -91,6 +91,10 @@ static int run(int argc, char** argv) {
                 {"guard-search-ignores-see-through", "", "methods with the look-alike guard: the look-alike search "
                  "scores the returns' endpoints alone, without charging the places returns from beyond a mapped "
                  "obstacle (the filter and the rival test still charge them; the guard before this flag)", ""},
+                {"matcher-heading-after-heading", "", "every correlative search (the relocalizer's, the guard's, "
+                 "the global matcher's, the path check's) visits its coarsest nodes heading after heading instead "
+                 "of across headings, highest bound first (the matcher before commit 61986f2: the same best scores, "
+                 "but a place that ties exactly with another may be found instead of it)", ""},
                 {"guard-max-search-nodes", "N", "methods with the look-alike guard: nodes one look-alike search charged "
                  "for see-through may score before it answers with the best place charged so far (0 = no limit)",
                  std::to_string(krp::LookAlikeGuardParams{}.max_search_nodes)},
@@ -217,6 +221,10 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.max_nodes_per_update =
       args.integerInRange("guard-nodes-per-update", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
   cfg.method_settings.guard.unverified_is_unsettled = !args.flag("guard-unverified-is-settled");
+  if (args.flag("matcher-heading-after-heading")) {
+    cfg.method_settings.relocalizer.matcher.roots_across_headings = false;
+    cfg.method_settings.matcher.matcher.roots_across_headings = false;
+  }
   for (const char* flag : {"wall-heading-window", "guard-wall-heading-window"})
     if (!krp::MatchRequest::validWallHeadingWindow(args.number(flag)))
       throw krp::InputError(std::string("--") + flag, "must be " + krp::MatchRequest::wallHeadingWindowRange());

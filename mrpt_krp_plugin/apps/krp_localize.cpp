@@ -243,6 +243,10 @@ static int run(int argc, char** argv) {
                 {"keypoints-every-turn", "0|1", "seeded: 1 runs the keypoint model on every one of --top-turns; 0 "
                  "runs the next turn only while no turn gave a credible answer (with the cross-check)",
                  krp::RelocalizerParams{}.stop_turns_once_localized ? "0" : "1"},
+                {"matcher-roots-across-headings", "0|1", "seeded / global-matcher: 1 lets every correlative search "
+                 "visit its coarsest nodes across headings, highest bound first; 0 goes heading after heading (the "
+                 "matcher before commit 61986f2: the same best scores, but a place that ties exactly with another "
+                 "may be found instead of it)", krp::CorrelativeMatcherParams{}.roots_across_headings ? "1" : "0"},
                 {"search-zones", "N", "seeded, with --zones: the classifier's most likely zones searched when the "
                  "keypoints give no credible pose (0 = no zone search)", "1"},
                 {"guard-recheck-every", "N", "methods with the look-alike guard (seeded, global-matcher-guarded): while "
@@ -289,6 +293,10 @@ static int run(int argc, char** argv) {
   if (every_turn != 0 && every_turn != 1) throw krp::InputError("--keypoints-every-turn", "must be 0 or 1");
   ms.relocalizer.stop_turns_once_localized = every_turn == 0;
   ms.relocalizer.zone_search.zones = static_cast<int>(toWholeNumber(s, "search_zones", 0, kMaxZones));
+  const auto roots_across = toNumber(s, "matcher_roots_across_headings");
+  if (roots_across != 0 && roots_across != 1) throw krp::InputError("--matcher-roots-across-headings", "must be 0 or 1");
+  ms.relocalizer.matcher.roots_across_headings = roots_across == 1;
+  ms.matcher.matcher.roots_across_headings = roots_across == 1;
   krp::useMinLocalizedFitFraction(toNumber(s, "min_localized_fit"), ms.relocalizer, ms.matcher);
   if (!s["calibration"].empty())
     krp::useConfidenceCalibration(krp::readConfidenceCalibration(s["calibration"]), ms.relocalizer, ms.matcher);

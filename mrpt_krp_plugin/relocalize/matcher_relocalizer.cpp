@@ -9,6 +9,7 @@ PoseHypothesis hypothesisFromMatch(const MatchSolution& solution, const Correlat
   PoseHypothesis h;
   h.pose = solution.pose;
   h.origin = PoseOrigin::kMatcher;
+  h.matcher_score = solution.score;
   h.cov.setZero();
   h.cov(0, 0) = h.cov(1, 1) = std::pow(0.5 * params.resolution_m, 2);
   h.cov(2, 2) = std::pow(0.5 * params.angular_step_deg * M_PI / 180.0, 2);

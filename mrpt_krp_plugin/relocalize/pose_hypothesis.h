@@ -19,6 +19,10 @@ struct PoseHypothesis {
   double alignment_rms_m = 0.0;     ///< RMS keypoint residual of the alignment [m]
   double fit_fraction = 0.0;        ///< scan returns explained by the map at `pose` (ScanFit) [0..1]
   double confidence = 0.0;          ///< probability that this is the robot's pose (HypothesisRanking) [0..1]
+  /// Origin kMatcher: the correlative search's score at the grid pose it proposed, before ICP
+  /// moved it (MatchSolution::score) [0..1]. Two places of one scan with the same score tie exactly:
+  /// which of them a search returns depends on its visiting order.
+  double matcher_score = 0.0;
   PoseOrigin origin = PoseOrigin::kKeypoints;
 };
 

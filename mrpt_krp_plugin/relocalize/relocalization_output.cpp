@@ -57,6 +57,9 @@ nlohmann::json relocalizationJson(const RelocalizationResult& r, const std::vect
                                {"zone_probability", h.zone_probability}, {"keypoint_inliers", h.keypoint_inliers},
                                {"alignment_rms_m", h.alignment_rms_m}, {"fit_fraction", h.fit_fraction},
                                {"confidence", h.confidence}, {"origin", originName(h.origin)}});
+    // Full precision: two places whose scores are equal to the last bit tie exactly.
+    j["hypotheses"].back()["matcher_score"] =
+        h.origin == PoseOrigin::kMatcher ? nlohmann::json(h.matcher_score) : nlohmann::json(nullptr);
   }
   const auto& t = r.times;
   j["times_ms"] = {{"submap", t.submap_ms}, {"classifier", t.classifier_ms}, {"keypoints", t.keypoints_ms},
@@ -84,7 +87,9 @@ std::string relocalizationText(const RelocalizationResult& r, const std::vector<
     o << "  #" << i + 1 << " x " << h.pose.x << " m, y " << h.pose.y << " m, yaw " << h.pose.phi * kRadToDeg
       << " deg; std " << std::sqrt(h.cov(0, 0)) << " / " << std::sqrt(h.cov(1, 1)) << " m, "
       << std::sqrt(h.cov(2, 2)) * kRadToDeg << " deg; zone " << zoneName(h.zone, zone_names) << "; fit "
-      << h.fit_fraction << "; confidence " << h.confidence << "; from " << originName(h.origin) << "\n";
+      << h.fit_fraction << "; confidence " << h.confidence << "; from " << originName(h.origin);
+    if (h.origin == PoseOrigin::kMatcher) o << " (score " << std::setprecision(6) << h.matcher_score << std::setprecision(3) << ")";
+    o << "\n";
   }
   return o.str();
 }
