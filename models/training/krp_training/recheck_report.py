@@ -56,10 +56,17 @@ def _border_section(result: dict) -> list:
             "across open floor has nothing to mark it):", "", *table, ""]
 
 
+# A table cell names at most this many landmarks: a map of 26 zones can leave a hundred and more
+# unlearned, and a cell that long makes the table unreadable. recheck.json lists them all.
+MAX_LANDMARKS_NAMED = 8
+
+
 def _names(v) -> str:
     """A list of landmark names; '-' for a result measured before landmarks were told apart."""
     if v is None:
         return "-"
+    if len(v) > MAX_LANDMARKS_NAMED:
+        return f"{len(v)} landmarks, among them " + ", ".join(v[:MAX_LANDMARKS_NAMED]) + " (all in recheck.json)"
     return ", ".join(v) if v else "none"
 
 

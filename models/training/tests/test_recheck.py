@@ -104,3 +104,19 @@ def test_the_report_sets_each_figure_beside_the_shipped_one(tmp_path):
     assert "Images: train 5, val 0, test 2, changed 1." in text
     # Accuracy by distance to another zone, for the split that has it.
     assert "| 0-1 m | 2 | 50.0 % |" in text
+
+
+def test_a_long_list_of_unlearned_landmarks_is_counted_not_spelled_out(tmp_path):
+    many = [f"z{i:02d} #{i % 12}" for i in range(30)]
+    result = {
+        "world": "w", "models": "models/w", "fresh_seed": 3, "split_seed": 1, "command": "c", "dataset_command": "d",
+        "fresh_counts": {"test": {"a": 1}},
+        "shipped": {"classifier": {"accuracy": {}}, "keypoints": {}},
+        "fresh": {"classifier": {s: {"images": 1, "accuracy": 1.0, "confusion": [[1]]} for s in ("test", "changed", "train")},
+                  "keypoints": {"test": {"keypoint_error": {"unlearned_landmarks": many}}}},
+    }
+    write_report(result, {"zones": ["a"], "lidar": {"name": "omni_12m"}}, tmp_path / "R.md")
+    text = (tmp_path / "R.md").read_text()
+    named = ", ".join(many[:8])
+    assert f"| - | 30 landmarks, among them {named} (all in recheck.json) | - | - |  |" in text
+    assert many[8] not in text
