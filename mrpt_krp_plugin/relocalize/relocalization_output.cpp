@@ -17,6 +17,11 @@ namespace {
 constexpr double kRadToDeg = 180.0 / M_PI;
 // Drawing: an arrow this long stands for a pose, whatever the map's resolution [m].
 constexpr double kArrowLengthM = 1.0;
+// Text: a matcher score to this many decimals tells most near-ties apart; hypotheses.json has
+// every digit, for telling an exact tie from a near one.
+constexpr int kScoreDecimals = 6;
+// Text: metres, degrees and fractions to this many decimals (millimetres, thousandths).
+constexpr int kTextDecimals = 3;
 
 const char* originName(PoseOrigin o) { return o == PoseOrigin::kMatcher ? "matcher" : "keypoints"; }
 
@@ -70,7 +75,7 @@ nlohmann::json relocalizationJson(const RelocalizationResult& r, const std::vect
 
 std::string relocalizationText(const RelocalizationResult& r, const std::vector<std::string>& zone_names) {
   std::ostringstream o;
-  o << std::fixed << std::setprecision(3);
+  o << std::fixed << std::setprecision(kTextDecimals);
   o << (r.ranking.localized ? "localized" : "NOT localized: " + r.ranking.reason) << "\nzones:";
   for (size_t z = 0; z < r.zone_probabilities.size(); ++z) o << " " << zoneName(int(z), zone_names) << " " << r.zone_probabilities[z];
   o << "\nkeypoint model on " << r.keypoint_turns << " of " << r.turns << " submap turn(s); " << r.detections
@@ -88,7 +93,8 @@ std::string relocalizationText(const RelocalizationResult& r, const std::vector<
       << " deg; std " << std::sqrt(h.cov(0, 0)) << " / " << std::sqrt(h.cov(1, 1)) << " m, "
       << std::sqrt(h.cov(2, 2)) * kRadToDeg << " deg; zone " << zoneName(h.zone, zone_names) << "; fit "
       << h.fit_fraction << "; confidence " << h.confidence << "; from " << originName(h.origin);
-    if (h.origin == PoseOrigin::kMatcher) o << " (score " << std::setprecision(6) << h.matcher_score << std::setprecision(3) << ")";
+    if (h.origin == PoseOrigin::kMatcher)
+      o << " (score " << std::setprecision(kScoreDecimals) << h.matcher_score << std::setprecision(kTextDecimals) << ")";
     o << "\n";
   }
   return o.str();
