@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mrpt_krp_plugin/bench/method_registry.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/inference/model_manifest.h"
+#include "mrpt_krp_plugin/map/map_loader.h"
+#include "mrpt_krp_plugin/relocalize/training_map_check.h"
 
 namespace krp {
 
@@ -45,6 +49,31 @@ RelocalizerParams relocalizerParamsFor(const std::string& name, RelocalizerParam
 }
 bool methodNeedsMatcher(const std::string& name) { return name == "global-matcher" || name == kMatcherGuarded; }
 
+std::vector<std::string> modelsOfTheSameMap(const std::string& root, const World& world, const std::string& lidar) {
+  std::vector<std::string> found;
+  std::error_code error;
+  if (!std::filesystem::is_directory(root, error)) return found;
+  std::shared_ptr<mrpt::maps::COccupancyGridMap2D> map;
+  try {
+    map = loadOccupancyMap(world.map_path).grid;
+  } catch (const std::exception&) {
+    return found;  // the run reports an unreadable map itself
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(root, error)) {
+    if (!std::filesystem::exists(entry.path() / "manifest.json")) continue;
+    try {
+      const auto manifest = readModelManifest(entry.path().string());
+      if (manifest.lidar_name != lidar) continue;
+      requireTrainingMap(manifest, *map);  // throws for another map
+      found.push_back(entry.path().string());
+    } catch (const std::exception&) {
+      // a folder of another map or lidar, or a broken one: not a candidate
+    }
+  }
+  std::sort(found.begin(), found.end());  // directory order is the file system's
+  return found;
+}
+
 std::string modelsFolder(const std::string& root, const std::map<std::string, std::string>& by_world,
                          const World& world, const std::string& lidar) {
   if (const auto named = by_world.find(world.name); named != by_world.end()) {
@@ -55,10 +84,15 @@ std::string modelsFolder(const std::string& root, const std::map<std::string, st
   }
   const std::string name = lidar == world.default_lidar_profile ? world.name : world.name + "_" + lidar;
   const auto folder = (std::filesystem::path(root) / name).string();
-  if (!std::filesystem::exists(std::filesystem::path(folder) / "manifest.json"))
-    throw InputError(folder, "no models of world '" + world.name + "' for lidar '" + lidar + "' (no manifest.json): " +
-                                 "train them with krp-train-map --world " + world.name + " --lidar " + lidar + " --out " +
-                                 folder);
+  if (!std::filesystem::exists(std::filesystem::path(folder) / "manifest.json")) {
+    std::string message = "no models of world '" + world.name + "' for lidar '" + lidar + "' (no manifest.json): " +
+                          "train them with krp-train-map --world " + world.name + " --lidar " + lidar + " --out " + folder;
+    const auto same_map = modelsOfTheSameMap(root, world, lidar);
+    if (!same_map.empty())
+      message += "; or, as " + same_map.front() + " was trained on this world's map for that lidar, use them: " +
+                 "--models-for " + world.name + "=" + same_map.front();
+    throw InputError(folder, message);
+  }
   return folder;
 }
 

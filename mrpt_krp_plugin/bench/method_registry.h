@@ -85,6 +85,12 @@ bool methodNeedsMatcher(const std::string& name);
 std::string modelsFolder(const std::string& root, const std::map<std::string, std::string>& by_world,
                          const World& world, const std::string& lidar);
 
+/// The model folders directly under `root` trained on `world`'s map (requireTrainingMap passes)
+/// for `lidar`, sorted: for a world drawn on another world's map (clutter added, a wing closed
+/// off) whose own folder is missing, modelsFolder()'s error names them. Empty when none, or when
+/// the root or the map cannot be read.
+std::vector<std::string> modelsOfTheSameMap(const std::string& root, const World& world, const std::string& lidar);
+
 /// A fresh initializer for a method; InputError listing the names for an unknown one, or for a
 /// method whose resources are missing.
 std::shared_ptr<ParticleInitializer> makeInitializer(const std::string& name, const MethodSettings& settings,

@@ -9,6 +9,7 @@
 #include "mrpt_krp_plugin/bench/method_registry.h"
 #include "mrpt_krp_plugin/common/input_error.h"
 #include "mrpt_krp_plugin/inference/model_manifest.h"
+#include "mrpt_krp_plugin/sim/world.h"
 
 namespace krp {
 namespace {
@@ -99,6 +100,28 @@ TEST(BenchRunner, RecordsNameTheModelsTheSeededMethodsRan) {
         << r.models;
     EXPECT_NE(r.models.find("keypoints sha256 " + manifest.keypoints.sha256.substr(0, 12)), std::string::npos)
         << r.models;
+  }
+}
+
+// A world drawn on another world's map (the cluttered office) has no models folder of its own:
+// the error names the folder of models trained on its map for its lidar, and none of another
+// map's or another lidar's.
+TEST(BenchRunner, AWorldWithoutModelsIsPointedAtTheModelsOfItsMap) {
+  const std::string root = std::string(KRP_SOURCE_DIR) + "/models";
+  const World cluttered =
+      readWorld(std::string(KRP_SOURCE_DIR) + "/sim_worlds/office_cluttered/office_cluttered.world.yaml");
+  EXPECT_EQ(modelsOfTheSameMap(root, cluttered, "omni_12m"), std::vector<std::string>{root + "/office_two_zone"});
+  EXPECT_EQ(modelsOfTheSameMap(root, cluttered, "lds01"), std::vector<std::string>{root + "/office_two_zone_lds01"});
+  const World warehouse = readWorld(std::string(KRP_SOURCE_DIR) + "/sim_worlds/warehouse/warehouse.world.yaml");
+  EXPECT_EQ(modelsOfTheSameMap(root, warehouse, "omni_12m"), std::vector<std::string>{root + "/warehouse"});
+  EXPECT_TRUE(modelsOfTheSameMap(root + "/no_such_folder", cluttered, "omni_12m").empty());
+  try {
+    modelsFolder(root, {}, cluttered, "omni_12m");
+    FAIL() << "a world without models was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("krp-train-map --world office_cluttered"), std::string::npos) << what;
+    EXPECT_NE(what.find("--models-for office_cluttered=" + root + "/office_two_zone"), std::string::npos) << what;
   }
 }
 
