@@ -9,7 +9,7 @@
 #   OUT: a new folder; TRIAL: the trial's index in the run the flags describe (--worlds, --lidars,
 #   --seed, --trials, --models-* as in the report's command; one world and one seeded method);
 #   MAP, MODELS, ZONES: the map YAML, models folder and zones.yaml krp-localize is to use.
-# (~1 min on 2 cores; build first with scripts/build.sh)
+# (a few seconds on 2 cores; build first with scripts/build.sh)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
@@ -25,27 +25,22 @@ done
 bin=./build/mrpt_krp_plugin/apps
 mkdir -p "$out"
 
+# Each order replays the trial (its rawlog: the same scan either way) and relocalizes its first scan.
 for order in across heading_after_heading; do
-  flags=()
-  [[ "$order" == heading_after_heading ]] && flags=(--matcher-heading-after-heading)
-  "$bin/krp-bench" "$@" "${flags[@]}" --only-trials "$trial" --save-rawlogs --out "$out/bench_$order" \
+  bench_flags=() roots=1
+  [[ "$order" == heading_after_heading ]] && bench_flags=(--matcher-heading-after-heading) roots=0
+  "$bin/krp-bench" "$@" "${bench_flags[@]}" --only-trials "$trial" --save-rawlogs --out "$out/bench_$order" \
     > "$out/bench_$order.log" 2>&1
-done
-rawlog="$(ls "$out"/bench_across/rawlogs/*_trial"$trial".rawlog)"
-truth="${rawlog%.rawlog}_groundtruth.txt"
-
-for order in across heading_after_heading; do
-  roots=1
-  [[ "$order" == heading_after_heading ]] && roots=0
-  "$bin/krp-localize" --map "$map" --rawlog "$rawlog" --ground-truth "$truth" --method seeded \
-    --models "$models" --zones "$zones" --single-scan 0 --matcher-roots-across-headings "$roots" \
+  rawlog="$(ls "$out/bench_$order"/rawlogs/*_trial"$trial".rawlog)"
+  "$bin/krp-localize" --map "$map" --rawlog "$rawlog" --ground-truth "${rawlog%.rawlog}_groundtruth.txt" \
+    --method seeded --models "$models" --zones "$zones" --single-scan 0 --matcher-roots-across-headings "$roots" \
     --out-dir "$out/single_scan_$order" > "$out/single_scan_$order.txt" 2>&1
 done
 
 python3 - "$out" <<'EOF'
 import csv, json, sys
 out = sys.argv[1]
-print(f"trial rows of krp-bench (method, first-scan confidence, best error m, final error m):")
+print("trial rows of krp-bench (method, first-scan confidence, best error m, final error m):")
 for order in ("across", "heading_after_heading"):
     for r in csv.DictReader(open(f"{out}/bench_{order}/trials.csv")):
         print(f"  {order:22s} {r['method']:16s} {r['seed_best_confidence']:>10s} {r['seed_best_error_xy_m']:>10s} "

@@ -221,10 +221,8 @@ static int run(int argc, char** argv) {
   cfg.method_settings.guard.max_nodes_per_update =
       args.integerInRange("guard-nodes-per-update", 0, krp::LookAlikeGuardParams::kMaxSearchNodesLimit);
   cfg.method_settings.guard.unverified_is_unsettled = !args.flag("guard-unverified-is-settled");
-  if (args.flag("matcher-heading-after-heading")) {
-    cfg.method_settings.relocalizer.matcher.roots_across_headings = false;
-    cfg.method_settings.matcher.matcher.roots_across_headings = false;
-  }
+  krp::useMatcherRootsAcrossHeadings(!args.flag("matcher-heading-after-heading"), cfg.method_settings.relocalizer,
+                                     cfg.method_settings.matcher);
   for (const char* flag : {"wall-heading-window", "guard-wall-heading-window"})
     if (!krp::MatchRequest::validWallHeadingWindow(args.number(flag)))
       throw krp::InputError(std::string("--") + flag, "must be " + krp::MatchRequest::wallHeadingWindowRange());

@@ -295,8 +295,7 @@ static int run(int argc, char** argv) {
   ms.relocalizer.zone_search.zones = static_cast<int>(toWholeNumber(s, "search_zones", 0, kMaxZones));
   const auto roots_across = toNumber(s, "matcher_roots_across_headings");
   if (roots_across != 0 && roots_across != 1) throw krp::InputError("--matcher-roots-across-headings", "must be 0 or 1");
-  ms.relocalizer.matcher.roots_across_headings = roots_across == 1;
-  ms.matcher.matcher.roots_across_headings = roots_across == 1;
+  krp::useMatcherRootsAcrossHeadings(roots_across == 1, ms.relocalizer, ms.matcher);
   krp::useMinLocalizedFitFraction(toNumber(s, "min_localized_fit"), ms.relocalizer, ms.matcher);
   if (!s["calibration"].empty())
     krp::useConfidenceCalibration(krp::readConfidenceCalibration(s["calibration"]), ms.relocalizer, ms.matcher);

@@ -60,14 +60,13 @@ std::vector<std::string> modelsOfTheSameMap(const std::string& root, const World
     return found;  // the run reports an unreadable map itself
   }
   for (const auto& entry : std::filesystem::directory_iterator(root, error)) {
-    if (!std::filesystem::exists(entry.path() / "manifest.json")) continue;
     try {
       const auto manifest = readModelManifest(entry.path().string());
       if (manifest.lidar_name != lidar) continue;
       requireTrainingMap(manifest, *map);  // throws for another map
       found.push_back(entry.path().string());
     } catch (const std::exception&) {
-      // a folder of another map or lidar, or a broken one: not a candidate
+      // no manifest, a broken one, or models of another map: not a candidate
     }
   }
   std::sort(found.begin(), found.end());  // directory order is the file system's

@@ -17,6 +17,11 @@ void useMinLocalizedFitFraction(double fraction, RelocalizerParams& learned, Mat
   matcher.verifier.ranking.min_localized_fit_fraction = fraction;
 }
 
+void useMatcherRootsAcrossHeadings(bool across, RelocalizerParams& learned, MatcherRelocalizerParams& matcher) {
+  learned.matcher.roots_across_headings = across;
+  matcher.matcher.roots_across_headings = across;
+}
+
 std::vector<std::string> hypothesisSourceBackends() { return {"learned", "global-matcher"}; }
 
 HypothesisSource makeHypothesisSource(std::shared_ptr<const mrpt::maps::COccupancyGridMap2D> map,

@@ -40,6 +40,10 @@ void useConfidenceCalibration(const ConfidenceCalibration& calibration, Relocali
 /// Sets the ranking's min_localized_fit_fraction in both backends' parameters.
 void useMinLocalizedFitFraction(double fraction, RelocalizerParams& learned, MatcherRelocalizerParams& matcher);
 
+/// Sets CorrelativeMatcherParams::roots_across_headings in both backends' matchers (false: the
+/// search's root order before commit 61986f2, to trace a trial that moved with it).
+void useMatcherRootsAcrossHeadings(bool across, RelocalizerParams& learned, MatcherRelocalizerParams& matcher);
+
 /// The backend names accepted by makeHypothesisSource, in a stable order.
 std::vector<std::string> hypothesisSourceBackends();
 

@@ -61,10 +61,10 @@ nlohmann::json relocalizationJson(const RelocalizationResult& r, const std::vect
                                {"covariance_x_y_yaw", cov}, {"zone", zoneName(h.zone, zone_names)},
                                {"zone_probability", h.zone_probability}, {"keypoint_inliers", h.keypoint_inliers},
                                {"alignment_rms_m", h.alignment_rms_m}, {"fit_fraction", h.fit_fraction},
-                               {"confidence", h.confidence}, {"origin", originName(h.origin)}});
-    // Full precision: two places whose scores are equal to the last bit tie exactly.
-    j["hypotheses"].back()["matcher_score"] =
-        h.origin == PoseOrigin::kMatcher ? nlohmann::json(h.matcher_score) : nlohmann::json(nullptr);
+                               {"confidence", h.confidence}, {"origin", originName(h.origin)},
+                               // Full precision: two places whose scores are equal to the last bit tie exactly.
+                               {"matcher_score", h.origin == PoseOrigin::kMatcher ? nlohmann::json(h.matcher_score)
+                                                                                  : nlohmann::json(nullptr)}});
   }
   const auto& t = r.times;
   j["times_ms"] = {{"submap", t.submap_ms}, {"classifier", t.classifier_ms}, {"keypoints", t.keypoints_ms},
