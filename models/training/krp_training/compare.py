@@ -104,6 +104,9 @@ def _parse_args(argv):
                                    "a profile file (default: the world's); must be the one the models in --out "
                                    "were trained for")
     p.add_argument("--bin-dir", type=Path, default=DEFAULT_BIN_DIR)
+    p.add_argument("--scenario-generation", choices=sorted(comparison_record.STRENGTH_CHOICES), default="both",
+                   help="train each architecture with scenario generation, without, or both (default): a large "
+                        "network's two runs can then be made in two invocations with --add")
     p.add_argument("--skip-loo", action="store_true", help="skip the leave-one-zone-out check")
     p.add_argument("--add", action="store_true",
                    help="add these architectures' runs to the existing comparison.json (same budget and datasets, "
@@ -153,7 +156,7 @@ def main(argv=None) -> int:
         # Without --add the old comparison stays whole until this one is; its progress goes beside it.
         progress_name = comparison_record.FILE_NAME if args.add else "comparison.running.json"
         for arch in args.architectures:
-            for strength in comparison_record.STRENGTHS:
+            for strength in comparison_record.STRENGTH_CHOICES[args.scenario_generation]:
                 train_set = _limit(sets[strength]["train"], args.train_limit, args.seed)
                 params = train_classifier.ClassifierParams(architecture=arch, epochs=args.epochs, seed=args.seed,
                                                            augment=augment)

@@ -11,6 +11,9 @@ import json
 from pathlib import Path
 
 STRENGTHS = (1.0, 0.0)  # with and without scenario generation
+# compare --scenario-generation: which of STRENGTHS an invocation trains (both datasets are made
+# either way, since --add checks both digests).
+STRENGTH_CHOICES = {"both": STRENGTHS, "with": (1.0,), "without": (0.0,)}
 FILE_NAME = "comparison.json"
 
 

@@ -68,3 +68,18 @@ def test_a_dataset_that_cannot_be_made_is_a_clear_error_and_writes_nothing(tmp_p
     assert code == 2
     assert "could not make the datasets" in capsys.readouterr().err
     assert not out.exists()
+
+
+def test_one_side_of_scenario_generation_is_trained_and_the_other_added_later(tmp_path, bin_dir):
+    out = tmp_path / "models"
+    common = ["--world", "office_two_zone", "--out", str(out), "--architectures", "compact", "--epochs", "1",
+              "--samples-per-zone", "40", "--skip-loo", "--bin-dir", str(bin_dir)]
+    assert compare.main(common + ["--scenario-generation", "with"]) == 0
+    record = json.loads((out / "comparison.json").read_text())
+    assert [(r["architecture"], r["strength"]) for r in record["runs"]] == [("compact", 1.0)]
+    assert record["ratios"] == {}
+    assert compare.main(common + ["--add", "--scenario-generation", "without"]) == 0
+    record = json.loads((out / "comparison.json").read_text())
+    assert sorted(r["strength"] for r in record["runs"]) == [0.0, 1.0]
+    assert list(record["ratios"]) == ["compact"]
+    assert record["commands"][1].endswith("--add --scenario-generation without")
