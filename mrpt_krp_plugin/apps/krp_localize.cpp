@@ -182,7 +182,14 @@ static std::vector<krp::RawlogStep> readSteps(std::map<std::string, std::string>
     std::cout << "carmen: " << log.steps.size() << " of " << log.laser_lines << " laser lines used ("
               << log.other_records << " other records ignored";
     if (log.skipped_scans) std::cout << "; " << log.skipped_scans << " scans skipped, first: " << log.first_skip_reason;
-    std::cout << "); no return at >= " << log.max_range_m << " m, laser " << log.laser_offset_x_m << " m ahead\n";
+    if (log.poses_from_odom_lines)
+      std::cout << "); RAWLASER1 scans (no return at their own maximum range) with the ODOM lines' odometry";
+    else
+      std::cout << "); no return at >= " << log.max_range_m << " m";
+    std::cout << ", laser " << log.laser_offset_x_m << " m ahead\n";
+    if (log.poses_from_odom_lines && toNumber(s, "truth_from_log") != 0)
+      throw krp::InputError("--truth-from-log", s["carmen"] + " has no FLASER or ROBOTLASER1 line: its poses are the "
+                                                "ODOM lines' odometry, not a corrected reference");
     *logged_truth = std::move(log.logged_poses);
     return std::move(log.steps);
   }

@@ -30,6 +30,9 @@ static int run(int argc, char** argv) {
   krp::CarmenLogParams cp;
   cp.flaser_fov_deg = args.number("carmen-fov-deg");
   const auto log = krp::readCarmenLog(args.get("carmen"), cp);
+  if (log.poses_from_odom_lines)
+    throw krp::InputError(args.get("carmen"), "has no FLASER or ROBOTLASER1 line: the poses of its RAWLASER1 scans are "
+                                              "the ODOM lines' odometry, and a map needs corrected ones");
   krp::LogMapperParams mp;
   mp.resolution_m = args.number("resolution");
   mp.max_insertion_range_m = args.number("max-range");

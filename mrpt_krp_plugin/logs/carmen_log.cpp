@@ -18,6 +18,7 @@
 
 #include "mrpt_krp_plugin/common/atomic_file.h"
 #include "mrpt_krp_plugin/common/input_error.h"
+#include "mrpt_krp_plugin/logs/odometry_timeline.h"
 
 namespace krp {
 namespace {
@@ -29,6 +30,11 @@ constexpr std::size_t kFlaserFieldsBesidesRanges = 11;
 // (3), tv rv forward_safety side_safety turn_axis, ipc_timestamp ipc_hostname logger_timestamp.
 constexpr std::size_t kRobotLaserHeaderFields = 8;
 constexpr std::size_t kRobotLaserTrailerFields = 14;
+// RAWLASER1: ROBOTLASER1's header, ranges and remissions, then ipc_timestamp ipc_hostname
+// logger_timestamp, and no pose.
+constexpr std::size_t kRawLaserTrailerFields = 3;
+// ODOM x y theta tv rv accel ipc_timestamp ipc_hostname logger_timestamp.
+constexpr std::size_t kOdomFields = 10;
 
 // The whole (decompressed) file; zlib reads plain files as they are.
 std::string readWholeFile(const std::string& path, std::size_t max_bytes) {
@@ -158,18 +164,24 @@ LaserLine parseFlaser(const LineFields& f, const CarmenLogParams& p, const LogSe
   return l;
 }
 
+// The beam settings ROBOTLASER1 and RAWLASER1 share (fields 2-5), and their n ranges.
+void readLaserSettings(const LineFields& f, const CarmenLogParams& p, LaserLine* l, std::size_t* n, std::size_t* m) {
+  *n = f.count(kRobotLaserHeaderFields, "beam count", p.max_beams);
+  *m = f.count(kRobotLaserHeaderFields + 1 + *n, "remission count", p.max_beams);
+  l->first_angle_rad = f.number(2, "start angle");
+  l->increment_rad = f.number(4, "angular resolution");
+  l->max_range_m = f.number(5, "maximum range");
+  if (!(l->increment_rad > 0)) f.fail("angular resolution must be > 0");
+  if (!(l->max_range_m > 0)) f.fail("maximum range must be > 0");
+}
+
 LaserLine parseRobotLaser(const LineFields& f, const CarmenLogParams& p) {
-  const std::size_t n = f.count(kRobotLaserHeaderFields, "beam count", p.max_beams);
-  const std::size_t m = f.count(kRobotLaserHeaderFields + 1 + n, "remission count", p.max_beams);
+  LaserLine l;
+  std::size_t n = 0, m = 0;
+  readLaserSettings(f, p, &l, &n, &m);
   f.requireCount(kRobotLaserHeaderFields + 2 + n + m + kRobotLaserTrailerFields,
                  "ROBOTLASER1 type start fov resolution max_range accuracy remission_mode n ranges m remissions "
                  "laser_pose robot_pose tv rv forward_safety side_safety turn_axis ipc_ts host logger_ts");
-  LaserLine l;
-  l.first_angle_rad = f.number(2, "start angle");
-  l.increment_rad = f.number(4, "angular resolution");
-  l.max_range_m = f.number(5, "maximum range");
-  if (!(l.increment_rad > 0)) f.fail("angular resolution must be > 0");
-  if (!(l.max_range_m > 0)) f.fail("maximum range must be > 0");
   l.ranges = readRanges(f, kRobotLaserHeaderFields + 1, n);
   const std::size_t poses = kRobotLaserHeaderFields + 2 + n + m;
   const mrpt::poses::CPose2D laser(f.pose(poses, "laser pose"));
@@ -179,6 +191,51 @@ LaserLine parseRobotLaser(const LineFields& f, const CarmenLogParams& p) {
   l.odometry = robot.asTPose();
   l.timestamp_s = f.number(f.size() - 1, "logger timestamp");
   return l;
+}
+
+// A RAWLASER1 line; its odometry comes from the ODOM lines (`odometry`), the laser's offset from
+// the front laser's setting. Nothing when no ODOM line is near its time.
+std::optional<LaserLine> parseRawLaser(const LineFields& f, const CarmenLogParams& p, const LogSettings& s,
+                                       const OdometryTimeline& odometry) {
+  LaserLine l;
+  std::size_t n = 0, m = 0;
+  readLaserSettings(f, p, &l, &n, &m);
+  f.requireCount(kRobotLaserHeaderFields + 2 + n + m + kRawLaserTrailerFields,
+                 "RAWLASER1 type start fov resolution max_range accuracy remission_mode n ranges m remissions ipc_ts "
+                 "host logger_ts");
+  l.ranges = readRanges(f, kRobotLaserHeaderFields + 1, n);
+  l.laser_on_robot = mrpt::poses::CPose2D(s.laser_offset_x_m, 0.0, 0.0);
+  l.timestamp_s = f.number(f.size() - 1, "logger timestamp");
+  const auto pose = odometry.at(l.timestamp_s);
+  if (!pose) return std::nullopt;
+  l.odometry = *pose;
+  l.logged_pose = *pose;
+  return l;
+}
+
+// The ODOM lines' poses by logger timestamp.
+OdometryTimeline readOdometry(const std::string& path, const std::vector<std::pair<std::size_t, std::string_view>>& lines,
+                              const CarmenLogParams& p) {
+  OdometryTimeline timeline(p.max_odometry_gap_s);
+  for (const auto& [line_no, text] : lines) {
+    if (text.rfind("ODOM ", 0) != 0) continue;
+    LineFields f(path, line_no, splitFields(text));
+    f.requireCount(kOdomFields, "ODOM x y theta tv rv accel ipc_ts host logger_ts");
+    timeline.add(f.number(kOdomFields - 1, "logger timestamp"), f.pose(1, "odometry pose"));
+  }
+  return timeline;
+}
+
+std::string secondsText(double s) {
+  std::ostringstream o;
+  o << s;
+  return o.str();
+}
+
+bool hasPosedLaserLines(const std::vector<std::pair<std::size_t, std::string_view>>& lines) {
+  for (const auto& [line_no, text] : lines)
+    if (text.rfind("FLASER ", 0) == 0 || text.rfind("ROBOTLASER1 ", 0) == 0) return true;
+  return false;
 }
 
 // MRPT's scans are centred on the sensor's x axis and spaced aperture/(n-1): a field of view
@@ -229,6 +286,8 @@ LogSettings readSettings(const std::string& path, const std::vector<std::pair<st
 CarmenLog readCarmenLog(const std::string& path, const CarmenLogParams& params) {
   if (!(params.flaser_fov_deg > 0 && params.flaser_fov_deg <= 360))
     throw InputError("flaser_fov_deg", "must be in (0, 360]");
+  if (!(params.max_odometry_gap_s >= 0) || !std::isfinite(params.max_odometry_gap_s))
+    throw InputError("max_odometry_gap_s", "must be finite and >= 0");
   const std::string text = readWholeFile(path, params.max_bytes);
   if (text.find('\0') != std::string::npos) throw InputError(path, "is binary, not a CARMEN text log");
 
@@ -246,41 +305,56 @@ CarmenLog readCarmenLog(const std::string& path, const CarmenLogParams& params) 
   CarmenLog log;
   log.max_range_m = settings.max_range_m;
   log.laser_offset_x_m = settings.laser_offset_x_m;
+  // FLASER and ROBOTLASER1 lines are the front laser's scans with a pose attached; where a log has
+  // them, its RAWLASER1 lines repeat those scans without one.
+  log.poses_from_odom_lines = !hasPosedLaserLines(lines);
+  const OdometryTimeline odometry_lines =
+      log.poses_from_odom_lines ? readOdometry(path, lines, params) : OdometryTimeline(params.max_odometry_gap_s);
   std::optional<mrpt::poses::CPose2D> previous_odometry;
   for (const auto& [line_no, line] : lines) {
     auto fields = splitFields(line);
     if (fields.empty() || fields[0].front() == '#') continue;
     LineFields f(path, line_no, std::move(fields));
-    LaserLine l;
+    std::optional<LaserLine> l;
     if (f.name() == "FLASER")
       l = parseFlaser(f, params, settings);
     else if (f.name() == "ROBOTLASER1")
       l = parseRobotLaser(f, params);
+    else if (f.name() == "RAWLASER1" && log.poses_from_odom_lines)
+      l = parseRawLaser(f, params, settings, odometry_lines);
     else {
       ++log.other_records;
       continue;
     }
     ++log.laser_lines;
-    std::size_t valid = 0;
-    auto scan = l.ranges.size() >= 2 ? toScan(l, std::string(f.name()), &valid) : nullptr;
-    if (!scan || valid < static_cast<std::size_t>(params.min_valid_returns)) {
+    if (!l) {
       if (log.first_skip_reason.empty())
-        log.first_skip_reason = "line " + std::to_string(line_no) + ": " + std::to_string(valid) + " usable returns of " +
-                                std::to_string(l.ranges.size()) + " (need " + std::to_string(params.min_valid_returns) + ")";
+        log.first_skip_reason = "line " + std::to_string(line_no) + ": no ODOM line within " +
+                                secondsText(params.max_odometry_gap_s) + " s of its time";
       ++log.skipped_scans;
       continue;
     }
-    const mrpt::poses::CPose2D odometry(l.odometry);
+    std::size_t valid = 0;
+    auto scan = l->ranges.size() >= 2 ? toScan(*l, std::string(f.name()), &valid) : nullptr;
+    if (!scan || valid < static_cast<std::size_t>(params.min_valid_returns)) {
+      if (log.first_skip_reason.empty())
+        log.first_skip_reason = "line " + std::to_string(line_no) + ": " + std::to_string(valid) + " usable returns of " +
+                                std::to_string(l->ranges.size()) + " (need " + std::to_string(params.min_valid_returns) + ")";
+      ++log.skipped_scans;
+      continue;
+    }
+    const mrpt::poses::CPose2D odometry(l->odometry);
     const mrpt::poses::CPose2D increment = previous_odometry ? odometry - *previous_odometry : mrpt::poses::CPose2D();
     previous_odometry = odometry;
     log.steps.push_back(makeRawlogStep(increment, scan, params.odometry));
-    log.logged_poses.push_back(l.logged_pose);
-    log.timestamps_s.push_back(l.timestamp_s);
+    log.logged_poses.push_back(l->logged_pose);
+    log.timestamps_s.push_back(l->timestamp_s);
   }
   if (log.steps.empty()) {
     std::ostringstream why;
-    why << "no usable laser line (FLASER or ROBOTLASER1): " << log.laser_lines << " read";
-    if (log.skipped_scans) why << ", " << log.skipped_scans << " with too few returns; first: " << log.first_skip_reason;
+    why << "no usable laser line (FLASER, ROBOTLASER1, or RAWLASER1 with ODOM lines): " << log.laser_lines << " read";
+    if (log.skipped_scans) why << ", " << log.skipped_scans << " skipped; first: " << log.first_skip_reason;
+    if (log.poses_from_odom_lines && odometry_lines.size() == 0 && log.laser_lines > 0) why << "; the log has no ODOM line";
     throw InputError(path, why.str());
   }
   return log;

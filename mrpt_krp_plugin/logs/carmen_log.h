@@ -28,6 +28,11 @@ struct CarmenLogParams {
   double laser_offset_x_m = std::numeric_limits<double>::quiet_NaN();
   /// A laser line with fewer usable returns is skipped and counted, not used.
   int min_valid_returns = 10;
+  /// A RAWLASER1 line carries no pose: its odometry is interpolated from the ODOM lines around it
+  /// (by logger timestamp, the one clock every line of a log shares), and it is skipped when the
+  /// nearest is further away than this. Only read in a log without FLASER or ROBOTLASER1 lines,
+  /// whose scans are the same laser's with a pose attached. [s]
+  double max_odometry_gap_s = 0.5;
   /// A line announcing more beams than this is corrupt (no 2D scanner has that many).
   std::size_t max_beams = 100000;
   /// The log's uncompressed size above which it is refused (memory guard). [bytes]
@@ -44,7 +49,10 @@ struct CarmenLog {
   /// reference pose; in a raw log it is odometry.
   std::vector<mrpt::math::TPose2D> logged_poses;
   std::vector<double> timestamps_s;     ///< logger timestamp of each used line [s]
-  std::size_t laser_lines = 0;          ///< FLASER + ROBOTLASER1 lines read
+  std::size_t laser_lines = 0;          ///< laser lines read (FLASER + ROBOTLASER1, else RAWLASER1)
+  /// The scans are RAWLASER1 lines and their poses the ODOM lines' odometry: never a corrected
+  /// reference, whatever the log's name says.
+  bool poses_from_odom_lines = false;
   std::size_t skipped_scans = 0;        ///< laser lines with too few usable returns
   std::size_t other_records = 0;        ///< lines of other message types (ODOM, PARAM, ...), ignored
   double max_range_m = 0.0;             ///< the no-return threshold used for FLASER lines [m]
@@ -53,7 +61,9 @@ struct CarmenLog {
 };
 
 /// Reads a CARMEN log (plain or gzip): FLASER and ROBOTLASER1 lines become steps, odometry
-/// from their odometry fields; every other message type is counted and ignored. Throws
+/// from their odometry fields; a log with neither is read from its front laser's RAWLASER1 lines,
+/// each with the odometry of the ODOM lines at its time. Every other message type is counted and
+/// ignored. Throws
 /// InputError naming the file and line for a missing or unreadable file, a malformed or
 /// truncated laser line, non-finite numbers, or a log with no usable laser line.
 CarmenLog readCarmenLog(const std::string& path, const CarmenLogParams& params = {});

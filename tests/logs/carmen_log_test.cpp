@@ -148,6 +148,81 @@ TEST(CarmenLog, RobotLaserLinesUseTheirOwnAnglesAndLaserPose) {
   }
 }
 
+// A RAWLASER1 line: `n` beams from `start`, `res` apart, and no pose.
+std::string rawlaser(const std::vector<double>& ranges, double start, double res, double t, const char* name = "RAWLASER1") {
+  std::ostringstream s;
+  s.precision(10);
+  s << name << " 0 " << start << " " << res * static_cast<double>(ranges.size() - 1) << " " << res << " 20.0 0.01 0 "
+    << ranges.size();
+  for (double r : ranges) s << " " << r;
+  s << " 0 " << t + 100.0 << " testhost " << t << "\n";
+  return s.str();
+}
+
+std::string odom(mrpt::math::TPose2D pose, double t) {
+  std::ostringstream s;
+  s.precision(10);
+  s << "ODOM " << pose.x << " " << pose.y << " " << pose.phi << " 0 0 0 " << t + 100.0 << " testhost " << t << "\n";
+  return s.str();
+}
+
+TEST(CarmenLog, RawLaserLinesTakeTheOdometryOfTheirTimeAndTheFrontLasersOffset) {
+  const auto dir = tempDir("carmen_rawlaser");
+  const double start = -kPi / 2, res = kPi / 4;
+  const std::vector<double> ranges{1.0, 2.0, 3.0, 4.0, 5.0};
+  // ODOM at 1 s and 2 s; scans at 1.5 s (halfway) and 2.0 s (on the second ODOM line).
+  writeText(dir + "/log.txt", "PARAM robot_frontlaser_offset 0.2 nohost 0\n" + odom({0, 0, 0}, 1.0) +
+                                  rawlaser(ranges, start, res, 1.5) + odom({2.0, 0, kPi / 2}, 2.0) +
+                                  rawlaser(ranges, start, res, 2.0) + rawlaser(ranges, start, res, 2.2, "RAWLASER2"));
+  CarmenLogParams few_beams;
+  few_beams.min_valid_returns = 3;
+  const auto log = readCarmenLog(dir + "/log.txt", few_beams);
+  ASSERT_EQ(log.steps.size(), 2u);
+  EXPECT_TRUE(log.poses_from_odom_lines);
+  EXPECT_EQ(log.laser_lines, 2u);
+  EXPECT_EQ(log.other_records, 4u);  // PARAM, 2 ODOM, the rear laser's RAWLASER2
+  EXPECT_NEAR(log.logged_poses[0].x, 1.0, 1e-9);
+  EXPECT_NEAR(log.logged_poses[0].phi, kPi / 4, 1e-9);
+  EXPECT_DOUBLE_EQ(log.timestamps_s[1], 2.0);
+  const auto inc = log.steps[1].action->getBestMovementEstimation()->poseChange->getMeanVal();
+  const mrpt::poses::CPose2D expected = mrpt::poses::CPose2D(2.0, 0, kPi / 2) - mrpt::poses::CPose2D(1.0, 0, kPi / 4);
+  EXPECT_NEAR(inc.x(), expected.x(), 1e-6);
+  EXPECT_NEAR(inc.y(), expected.y(), 1e-6);
+  EXPECT_NEAR(inc.phi(), kPi / 4, 1e-6);
+  // The line's own beam settings, 0.2 m ahead of the robot centre.
+  const auto pts = returnsInRobotFrame(*scanOf(log.steps[0]));
+  ASSERT_EQ(pts.size(), ranges.size());
+  for (std::size_t i = 0; i < ranges.size(); ++i) {
+    const double a = start + static_cast<double>(i) * res;
+    EXPECT_NEAR(pts[i].x, 0.2 + ranges[i] * std::cos(a), 1e-4) << "beam " << i;
+    EXPECT_NEAR(pts[i].y, ranges[i] * std::sin(a), 1e-4) << "beam " << i;
+  }
+}
+
+TEST(CarmenLog, RawLaserLinesRepeatingPosedScansAreNotReadTwice) {
+  const auto dir = tempDir("carmen_rawlaser_dup");
+  const auto ranges = constantRanges(20, 2.0);
+  writeText(dir + "/log.txt", header() + rawlaser(ranges, -kPi / 2, kPi / 19, 1.0) +
+                                  flaser(ranges, {0, 0, 0}, {0, 0, 0}, 1.0) + rawlaser(ranges, -kPi / 2, kPi / 19, 2.0) +
+                                  flaser(ranges, {1, 0, 0}, {1, 0, 0}, 2.0));
+  const auto log = readCarmenLog(dir + "/log.txt");
+  EXPECT_FALSE(log.poses_from_odom_lines);
+  ASSERT_EQ(log.steps.size(), 2u);
+  EXPECT_EQ(scanOf(log.steps[0])->sensorLabel, "FLASER");
+  EXPECT_EQ(log.other_records, 5u);  // 2 PARAM, 1 ODOM, 2 RAWLASER1
+}
+
+TEST(CarmenLog, RawLaserLinesFarFromAnyOdometryAreSkippedAndSaidWhy) {
+  const auto dir = tempDir("carmen_rawlaser_gap");
+  const auto ranges = constantRanges(20, 2.0);
+  writeText(dir + "/log.txt", odom({0, 0, 0}, 1.0) + rawlaser(ranges, -kPi / 2, kPi / 19, 5.0) +
+                                  rawlaser(ranges, -kPi / 2, kPi / 19, 1.1));
+  const auto log = readCarmenLog(dir + "/log.txt");
+  ASSERT_EQ(log.steps.size(), 1u);
+  EXPECT_EQ(log.skipped_scans, 1u);
+  EXPECT_NE(log.first_skip_reason.find("line 2: no ODOM line within 0.5 s"), std::string::npos) << log.first_skip_reason;
+}
+
 // Writes `text` gzip-compressed, keeping only the first `keep_fraction` of the compressed bytes.
 void writeGzip(const std::string& path, const std::string& text, double keep_fraction = 1.0) {
   const std::string tmp = path + ".full";
@@ -207,6 +282,11 @@ TEST(CarmenLog, BadLogsAreRefusedNamingFileLineAndProblem) {
   expectRefused("no_laser", header(), "no usable laser line");
   expectRefused("binary", std::string("FLASER\0\x01\x02", 9), "binary");
   expectRefused("bad_param", "PARAM robot_front_laser_max far nohost 0\n" + good, "robot_front_laser_max 'far'");
+  const auto raw = rawlaser(constantRanges(20, 2.0), -1.5, 0.15, 1.0);
+  expectRefused("raw_without_odom", raw, "1 read, 1 skipped; first: line 1: no ODOM line within 0.5 s of its time; the log "
+                                         "has no ODOM line");
+  expectRefused("raw_truncated", odom({0, 0, 0}, 1.0) + raw.substr(0, raw.size() / 2), "line 2 (RAWLASER1): ends after");
+  expectRefused("odom_truncated", "ODOM 0 0 0 0 0 0 1 h\n" + raw, "line 1 (ODOM): has 9 fields, expected 10");
   expectRefused("bad_resolution", "ROBOTLASER1 0 0 1 -0.1 20 0 0 2 1 1 0 0 0 0 0 0 0 0 0 0 0 0 1 h 1\n",
                 "angular resolution must be > 0");
 }
