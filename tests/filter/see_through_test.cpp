@@ -141,5 +141,26 @@ TEST(SeeThrough, ACountThatMayStopEarlyStopsOnlyOnceItHasEnough) {
   EXPECT_DOUBLE_EQ(scan.shareUpTo(kOneMetreEast, 1.0), scan.share(kOneMetreEast));
 }
 
+// The rays marched side by side give the count of marching them one at a time, at poses in the
+// room, hugging its walls, on them and off the map, and stop at exactly `enough`.
+TEST(SeeThrough, RaysMarchedSideBySideCountAsRaysMarchedOneAtATime) {
+  const auto room = test::asymmetricRoom();
+  const SeeThroughPenalty penalty(room, everyBeam());
+  const auto scan = penalty.forScan(*scanAt(room, kTruth, 4));
+  Rng rng(17);
+  int poses_seeing_through = 0;
+  for (int i = 0; i < 400; ++i) {
+    // x and y from a little off the map's edges to a little beyond them, any heading.
+    const mrpt::math::TPose2D pose(rng.uniform(room.getXMin() - 1.0, room.getXMax() + 1.0),
+                                   rng.uniform(room.getYMin() - 1.0, room.getYMax() + 1.0), rng.uniform(-M_PI, M_PI));
+    const int one_at_a_time = scan.countOneRayAtATime(pose);
+    ASSERT_EQ(scan.count(pose), one_at_a_time) << "pose " << i;
+    for (int enough : {0, 1, 3, one_at_a_time, one_at_a_time + 1})
+      ASSERT_EQ(scan.countUpTo(pose, enough), std::min(std::max(enough, 0), one_at_a_time)) << "pose " << i;
+    poses_seeing_through += one_at_a_time > 0 ? 1 : 0;
+  }
+  EXPECT_GT(poses_seeing_through, 100) << "too few poses that see through to test the count";
+}
+
 }  // namespace
 }  // namespace krp
