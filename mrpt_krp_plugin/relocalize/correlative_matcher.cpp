@@ -62,79 +62,6 @@ CorrelativeMatcher::CorrelativeMatcher(const mrpt::maps::COccupancyGridMap2D& ma
   map_axes_ = mapWallAxes(map, params_.wall_axes);
 }
 
-namespace {
-/// `sum` as a float no smaller than it, so a stored tail sum still bounds.
-float roundedUp(double sum) {
-  float f = static_cast<float>(sum);
-  if (static_cast<double>(f) < sum) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  return f;
-}
-}  // namespace
-
-double CorrelativeMatcher::bound(const Rotation& r, int cx, int cy, int level, double cutoff, const float* parent_tail,
-                                 float* tail_out) const {
-  ++nodes_scored_;
-  const cv::Mat& g = levels_[level];
-  const int gx = cx + margin_, gy = cy + margin_;  // the node's cell in the level grids
-  const size_t n = r.linear.size(), checks = checkpoints(r);
-  const bool stop = params_.stop_bound_early && cutoff != kNoCutoff;
-  if (!params_.stop_bound_early) tail_out = nullptr;
-  if (gx + r.min_x >= 0 && gy + r.min_y >= 0 && gx + r.max_x < g.cols && gy + r.max_y < g.rows) {
-    const float* robot_cell = g.ptr<float>(gy) + gx;
-    // Four running sums: one would make every addition wait for the previous one.
-    double part[4] = {0, 0, 0, 0};
-    const size_t whole = n - n % 4;
-    size_t i = 0;
-    // The returns not read yet score at most one each, or at most the parent's over the same
-    // returns: once the sum so far plus that cannot beat the cutoff, neither can the node, which
-    // is pruned without reading the rest (most nodes of a search with a high bar end here). The
-    // slack makes rounding (of the sums, of a parent's tail sums) err towards reading on, never
-    // towards pruning a node the full bound would keep.
-    std::array<double, kMaxCheckpoints> read_by;  // written up to checkpoints(r) before any read
-    if (stop || tail_out) {
-      const double needed = cutoff * static_cast<double>(n) - kCutoffSlack;
-      for (size_t k = 0; k < checks; ++k) {
-        for (const size_t end = i + kCutoffCheckEvery; i < end; i += 4)
-          for (size_t j = 0; j < 4; ++j) part[j] += robot_cell[r.linear[i + j]];
-        read_by[k] = (part[0] + part[1]) + (part[2] + part[3]);
-        const double unread = parent_tail ? static_cast<double>(parent_tail[k]) : static_cast<double>(n - i);
-        if (stop && read_by[k] + unread < needed) {
-          ++nodes_stopped_early_;
-          return kPruned;
-        }
-      }
-    }
-    for (; i < whole; i += 4)
-      for (size_t j = 0; j < 4; ++j) part[j] += robot_cell[r.linear[i + j]];
-    for (; i < n; ++i) part[0] += robot_cell[r.linear[i]];
-    const double sum = (part[0] + part[1]) + (part[2] + part[3]);
-    if (tail_out)
-      for (size_t k = 0; k < checks; ++k) tail_out[k] = roundedUp(sum - read_by[k]);
-    return sum / static_cast<double>(n);
-  }
-  double sum = 0;
-  for (const auto& o : r.offsets) {
-    const int x = gx + o.x, y = gy + o.y;
-    // A node's window may start left of or below the grid: the part inside still bounds it.
-    const int span = (1 << level) - 1;
-    if (x + span < 0 || y + span < 0 || x >= g.cols || y >= g.rows) continue;
-    sum += g.at<float>(std::max(y, 0), std::max(x, 0));
-  }
-  // Near the grid's edge only the plain bound of one per return is kept for the children.
-  if (tail_out)
-    for (size_t k = 0; k < checks; ++k) tail_out[k] = static_cast<float>(n - (k + 1) * kCutoffCheckEvery);
-  return sum / static_cast<double>(r.offsets.size());
-}
-
-float* CorrelativeMatcher::reserveTail(const Rotation& r, TailSums& tails, std::int64_t* start) {
-  const size_t checks = checkpoints(r);
-  *start = -1;
-  if (checks == 0) return nullptr;
-  *start = static_cast<std::int64_t>(tails.size());
-  tails.resize(tails.size() + checks);
-  return tails.data() + *start;
-}
-
 cv::Mat CorrelativeMatcher::regionOf(const std::vector<Zone>& zones) const {
   cv::Mat region = cv::Mat::zeros(free_.size(), CV_8U);
   const double res = params_.resolution_m;
@@ -248,17 +175,9 @@ std::vector<CorrelativeMatcher::Node> CorrelativeMatcher::roots(const Rotation& 
   const int top = params_.depth, step = 1 << top;
   std::vector<Node> out;
   for (int cy = 0; cy < free_.rows; cy += step)
-    for (int cx = 0; cx < free_.cols; cx += step) {
-      if (!in_region(cx, cy, top)) continue;
-      Node node{cx, cy, top, 0.0};
-      float* tail = top > 0 ? reserveTail(rot, tails, &node.tail) : nullptr;
-      node.bound = bound(rot, cx, cy, top, cutoff, nullptr, tail);
-      if (node.bound == kPruned && tail) {
-        tails.resize(static_cast<size_t>(node.tail));  // a pruned node has no children to bound
-        node.tail = -1;
-      }
-      out.push_back(node);
-    }
+    for (int cx = 0; cx < free_.cols; cx += step)
+      if (in_region(cx, cy, top)) out.push_back(Node{cx, cy, top, 0.0});
+  boundNodes(rot, out.data(), out.size(), cutoff, nullptr, tails);
   return out;
 }
 
@@ -278,15 +197,9 @@ size_t CorrelativeMatcher::children(const Rotation& rot, const Node& n, const Ta
     for (int dx : {0, half}) {
       const int cx = n.cx + dx, cy = n.cy + dy;
       if (cx >= free_.cols || cy >= free_.rows || !in_region(cx, cy, level)) continue;
-      Node child{cx, cy, level, 0.0};
-      float* tail = level > 0 ? reserveTail(rot, tails, &child.tail) : nullptr;
-      child.bound = bound(rot, cx, cy, level, cutoff, parent_tail, tail);
-      if (child.bound == kPruned && tail) {
-        tails.resize(static_cast<size_t>(child.tail));
-        child.tail = -1;
-      }
-      out[count++] = child;
+      out[count++] = Node{cx, cy, level, 0.0};
     }
+  boundNodes(rot, out.data(), count, cutoff, parent_tail, tails);
   return count;
 }
 

@@ -166,6 +166,12 @@ class CorrelativeMatcher {
   /// startSearch() without starting the counters afresh, so match() counts all its searches.
   std::unique_ptr<Search> setUpSearch(const mrpt::obs::CObservation2DRangeScan& scan, const MatchRequest& request) const;
 
+  static constexpr double kNoCutoff = -std::numeric_limits<double>::infinity();
+  static constexpr double kPruned = -std::numeric_limits<double>::infinity();
+  /// Returns gathered between two checks against the cutoff (a multiple of 4, the running sums).
+  static constexpr size_t kCutoffCheckEvery = 16;
+  /// Checkpoints kept per node (returns past the last are read without checks).
+  static constexpr size_t kMaxCheckpoints = 64;
   struct Rotation {
     double phi;
     std::vector<cv::Point> offsets;  ///< each return's cell offset from the robot's cell
@@ -232,16 +238,33 @@ class CorrelativeMatcher {
   /// `tail_out` (checkpoints(r) floats), the node's own tail sums are written there unless pruned.
   double bound(const Rotation& r, int cx, int cy, int level, double cutoff = kNoCutoff,
                const float* parent_tail = nullptr, float* tail_out = nullptr) const;
+  /// One node's bound() being gathered (the nodes whose returns all land inside the level grid).
+  struct BoundLane {
+    const float* robot_cell = nullptr;  ///< the node's cell in its level grid
+    float* tail_out = nullptr;          ///< its tail sums, or null
+    double part[4] = {0, 0, 0, 0};      ///< four running sums: one would make each addition wait for the last
+    std::array<double, kMaxCheckpoints> read_by;  ///< the sum at each checkpoint, written before any read
+  };
+  /// Whether the node's returns all land inside its level grid (bound()'s plain gather).
+  bool gathersInside(const Rotation& r, int cx, int cy, int level) const;
+  /// The node's cell in the level grid of `level`.
+  const float* robotCell(int cx, int cy, int level) const {
+    return levels_[level].ptr<float>(cy + margin_) + cx + margin_;
+  }
+  /// bound()'s gather of `lane` from checkpoint `k` on (k * kCutoffCheckEvery returns read).
+  double gatherFrom(const Rotation& r, BoundLane& lane, size_t k, double cutoff, const float* parent_tail) const;
+  /// bound() of two nodes of one level whose returns land inside the grid, gathered side by side
+  /// so that each sum's wait for its last addition overlaps the other node's (each node's sums
+  /// are added in bound()'s order: the same bounds, bit for bit); each return's offset is read once.
+  void boundPair(const Rotation& r, BoundLane (&lanes)[2], double cutoff, const float* parent_tail, double (&out)[2]) const;
+  /// The bounds of `count` nodes of one level (bound() with `cutoff` and `parent_tail`), pairs of
+  /// them side by side, each node's tail sums appended to `tails` unless it is pruned, in order.
+  void boundNodes(const Rotation& r, Node* nodes, size_t count, double cutoff, const float* parent_tail,
+                  TailSums& tails) const;
   /// Checkpoints of a bound over `r`'s returns (one every kCutoffCheckEvery returns, at most kMaxCheckpoints).
   static size_t checkpoints(const Rotation& r) { return std::min(r.linear.size() / kCutoffCheckEvery, kMaxCheckpoints); }
   /// A new node's tail sums go to the end of `tails`: where they start, and room for them.
   static float* reserveTail(const Rotation& r, TailSums& tails, std::int64_t* start);
-  static constexpr double kNoCutoff = -std::numeric_limits<double>::infinity();
-  static constexpr double kPruned = -std::numeric_limits<double>::infinity();
-  /// Returns gathered between two checks against the cutoff (a multiple of 4, the running sums).
-  static constexpr size_t kCutoffCheckEvery = 16;
-  /// Checkpoints kept per node (returns past the last are read without checks).
-  static constexpr size_t kMaxCheckpoints = 64;
   /// Margin on the cutoff test, far above the rounding of a sum of a few hundred scores in [0, 1].
   static constexpr double kCutoffSlack = 1e-9;
   bool robotCellFree(int cx, int cy) const { return free_.at<uint8_t>(cy, cx) != 0; }
