@@ -216,14 +216,14 @@ std::optional<LaserLine> parseRawLaser(const LineFields& f, const CarmenLogParam
 // The ODOM lines' poses by logger timestamp.
 OdometryTimeline readOdometry(const std::string& path, const std::vector<std::pair<std::size_t, std::string_view>>& lines,
                               const CarmenLogParams& p) {
-  OdometryTimeline timeline(p.max_odometry_gap_s);
+  std::vector<OdometryTimeline::Sample> samples;
   for (const auto& [line_no, text] : lines) {
     if (text.rfind("ODOM ", 0) != 0) continue;
     LineFields f(path, line_no, splitFields(text));
     f.requireCount(kOdomFields, "ODOM x y theta tv rv accel ipc_ts host logger_ts");
-    timeline.add(f.number(kOdomFields - 1, "logger timestamp"), f.pose(1, "odometry pose"));
+    samples.push_back({f.number(kOdomFields - 1, "logger timestamp"), f.pose(1, "odometry pose")});
   }
-  return timeline;
+  return OdometryTimeline(std::move(samples), p.max_odometry_gap_s);
 }
 
 std::string secondsText(double s) {
@@ -309,7 +309,7 @@ CarmenLog readCarmenLog(const std::string& path, const CarmenLogParams& params) 
   // them, its RAWLASER1 lines repeat those scans without one.
   log.poses_from_odom_lines = !hasPosedLaserLines(lines);
   const OdometryTimeline odometry_lines =
-      log.poses_from_odom_lines ? readOdometry(path, lines, params) : OdometryTimeline(params.max_odometry_gap_s);
+      log.poses_from_odom_lines ? readOdometry(path, lines, params) : OdometryTimeline({}, params.max_odometry_gap_s);
   std::optional<mrpt::poses::CPose2D> previous_odometry;
   for (const auto& [line_no, line] : lines) {
     auto fields = splitFields(line);

@@ -9,25 +9,19 @@
 
 namespace krp {
 
-OdometryTimeline::OdometryTimeline(double max_gap_s) : max_gap_s_(max_gap_s) {
+OdometryTimeline::OdometryTimeline(std::vector<Sample> samples, double max_gap_s)
+    : max_gap_s_(max_gap_s), samples_(std::move(samples)) {
   if (!(max_gap_s_ >= 0.0) || !std::isfinite(max_gap_s_))
     throw std::invalid_argument("OdometryTimeline: max_gap_s must be finite and >= 0");
-}
-
-void OdometryTimeline::add(double time_s, const mrpt::math::TPose2D& pose) {
-  if (!samples_.empty() && time_s <= samples_.back().time_s) sorted_ = false;
-  samples_.push_back({time_s, pose});
+  // Sorted once (stable, so that of two poses with one time the first stays first and is kept),
+  // so that at() is a plain lookup.
+  std::stable_sort(samples_.begin(), samples_.end(), [](const Sample& a, const Sample& b) { return a.time_s < b.time_s; });
+  samples_.erase(std::unique(samples_.begin(), samples_.end(),
+                             [](const Sample& a, const Sample& b) { return a.time_s == b.time_s; }),
+                 samples_.end());
 }
 
 std::optional<mrpt::math::TPose2D> OdometryTimeline::at(double time_s) const {
-  if (!sorted_) {
-    // Stable, so that of two lines with one time the first stays first (and is the one kept).
-    std::stable_sort(samples_.begin(), samples_.end(), [](const Sample& a, const Sample& b) { return a.time_s < b.time_s; });
-    samples_.erase(std::unique(samples_.begin(), samples_.end(),
-                               [](const Sample& a, const Sample& b) { return a.time_s == b.time_s; }),
-                   samples_.end());
-    sorted_ = true;
-  }
   if (samples_.empty()) return std::nullopt;
   const auto after = std::lower_bound(samples_.begin(), samples_.end(), time_s,
                                       [](const Sample& s, double t) { return s.time_s < t; });

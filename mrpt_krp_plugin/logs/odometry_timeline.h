@@ -16,11 +16,17 @@ class OdometryTimeline {
   /// nearest ODOM line beyond it says nothing about where the robot was then.
   static constexpr double kDefaultMaxGapS = 0.5;
 
-  explicit OdometryTimeline(double max_gap_s = kDefaultMaxGapS);
+  /// Odometry pose and its time [s].
+  struct Sample {
+    double time_s;
+    mrpt::math::TPose2D pose;
+  };
 
-  /// Adds the odometry pose at `time_s`. Any order; a time already given keeps its first pose.
-  void add(double time_s, const mrpt::math::TPose2D& pose);
-  std::size_t size() const { return samples_.size(); }  ///< poses added (a repeated time counted until asked)
+  /// The poses `samples` gives, in any order; of two with one time, the first is kept. Throws
+  /// std::invalid_argument for a max_gap_s that is negative or not finite.
+  explicit OdometryTimeline(std::vector<Sample> samples = {}, double max_gap_s = kDefaultMaxGapS);
+
+  std::size_t size() const { return samples_.size(); }  ///< poses kept (one per time)
 
   /// The odometry at `time_s`: interpolated between the poses around it (heading along the
   /// shorter turn), or the nearer end's pose outside them; none when the nearest pose is more
@@ -28,13 +34,8 @@ class OdometryTimeline {
   std::optional<mrpt::math::TPose2D> at(double time_s) const;
 
  private:
-  struct Sample {
-    double time_s;
-    mrpt::math::TPose2D pose;
-  };
   double max_gap_s_;
-  mutable std::vector<Sample> samples_;
-  mutable bool sorted_ = true;
+  std::vector<Sample> samples_;  ///< by time
 };
 
 }  // namespace krp
