@@ -164,26 +164,31 @@ LaserLine parseFlaser(const LineFields& f, const CarmenLogParams& p, const LogSe
   return l;
 }
 
-// The beam settings ROBOTLASER1 and RAWLASER1 share (fields 2-5), and their n ranges.
-void readLaserSettings(const LineFields& f, const CarmenLogParams& p, LaserLine* l, std::size_t* n, std::size_t* m) {
-  *n = f.count(kRobotLaserHeaderFields, "beam count", p.max_beams);
-  *m = f.count(kRobotLaserHeaderFields + 1 + *n, "remission count", p.max_beams);
+// The fields ROBOTLASER1 and RAWLASER1 share: the beam settings (fields 2-5), the n ranges and
+// the m remissions, then `trailer_fields` more (`layout` names them all, for the count's error).
+// Where the trailer starts.
+std::size_t readBeamFields(const LineFields& f, const CarmenLogParams& p, std::size_t trailer_fields, const char* layout,
+                           LaserLine* l) {
+  const std::size_t n = f.count(kRobotLaserHeaderFields, "beam count", p.max_beams);
+  const std::size_t m = f.count(kRobotLaserHeaderFields + 1 + n, "remission count", p.max_beams);
   l->first_angle_rad = f.number(2, "start angle");
   l->increment_rad = f.number(4, "angular resolution");
   l->max_range_m = f.number(5, "maximum range");
   if (!(l->increment_rad > 0)) f.fail("angular resolution must be > 0");
   if (!(l->max_range_m > 0)) f.fail("maximum range must be > 0");
+  const std::size_t trailer = kRobotLaserHeaderFields + 2 + n + m;
+  f.requireCount(trailer + trailer_fields, layout);
+  l->ranges = readRanges(f, kRobotLaserHeaderFields + 1, n);
+  return trailer;
 }
 
 LaserLine parseRobotLaser(const LineFields& f, const CarmenLogParams& p) {
   LaserLine l;
-  std::size_t n = 0, m = 0;
-  readLaserSettings(f, p, &l, &n, &m);
-  f.requireCount(kRobotLaserHeaderFields + 2 + n + m + kRobotLaserTrailerFields,
-                 "ROBOTLASER1 type start fov resolution max_range accuracy remission_mode n ranges m remissions "
-                 "laser_pose robot_pose tv rv forward_safety side_safety turn_axis ipc_ts host logger_ts");
-  l.ranges = readRanges(f, kRobotLaserHeaderFields + 1, n);
-  const std::size_t poses = kRobotLaserHeaderFields + 2 + n + m;
+  const std::size_t poses = readBeamFields(
+      f, p, kRobotLaserTrailerFields,
+      "ROBOTLASER1 type start fov resolution max_range accuracy remission_mode n ranges m remissions laser_pose "
+      "robot_pose tv rv forward_safety side_safety turn_axis ipc_ts host logger_ts",
+      &l);
   const mrpt::poses::CPose2D laser(f.pose(poses, "laser pose"));
   const mrpt::poses::CPose2D robot(f.pose(poses + 3, "robot pose"));
   l.laser_on_robot = laser - robot;
@@ -198,12 +203,10 @@ LaserLine parseRobotLaser(const LineFields& f, const CarmenLogParams& p) {
 std::optional<LaserLine> parseRawLaser(const LineFields& f, const CarmenLogParams& p, const LogSettings& s,
                                        const OdometryTimeline& odometry) {
   LaserLine l;
-  std::size_t n = 0, m = 0;
-  readLaserSettings(f, p, &l, &n, &m);
-  f.requireCount(kRobotLaserHeaderFields + 2 + n + m + kRawLaserTrailerFields,
+  readBeamFields(f, p, kRawLaserTrailerFields,
                  "RAWLASER1 type start fov resolution max_range accuracy remission_mode n ranges m remissions ipc_ts "
-                 "host logger_ts");
-  l.ranges = readRanges(f, kRobotLaserHeaderFields + 1, n);
+                 "host logger_ts",
+                 &l);
   l.laser_on_robot = mrpt::poses::CPose2D(s.laser_offset_x_m, 0.0, 0.0);
   l.timestamp_s = f.number(f.size() - 1, "logger timestamp");
   const auto pose = odometry.at(l.timestamp_s);
