@@ -22,6 +22,30 @@ constexpr size_t kInterleave = 8;
 // Rays marched side by side by countCrossing: enough to cover a clearance lookup's latency
 // (an L2 access and the step's arithmetic), few enough to stay in registers.
 constexpr int kLanes = 8;
+
+// The map's clearance per cell, in cells (SeeThroughPenalty::clearance_cells_).
+struct ClearanceField {
+  const float* at;
+  int cols, rows;
+};
+
+enum class RayStep { kGoesOn, kClear, kCrossed };
+
+// One step of a ray from (gx0, gy0) along (c, s), `t` cells along it so far, `length` cells long
+// [cells]: a ray leaving the map counts as clear. Both marches take their steps here, so that
+// each ray takes bit for bit the same steps in either.
+inline RayStep marchStep(const ClearanceField& field, double gx0, double gy0, double c, double s, double length,
+                         double& t) {
+  if (!(t < length)) return RayStep::kClear;
+  const double gx = gx0 + t * c, gy = gy0 + t * s;
+  if (gx < 0.0 || gy < 0.0) return RayStep::kClear;
+  const int cx = static_cast<int>(gx), cy = static_cast<int>(gy);
+  if (cx >= field.cols || cy >= field.rows) return RayStep::kClear;
+  const double clearance = field.at[static_cast<size_t>(cy) * field.cols + cx];
+  if (clearance <= 0.0) return RayStep::kCrossed;
+  t += std::max(clearance - kStepSafetyCells, kMinStepCells);
+  return RayStep::kGoesOn;
+}
 }  // namespace
 
 double seeThroughNats(const SensorModelParams& sensor) {
@@ -54,26 +78,19 @@ bool SeeThroughPenalty::crossesObstacle(double x0, double y0, double cos_a, doub
   // In cell units, so that a step is one multiply-add and a cell index a truncation.
   const double gx0 = (x0 - x_min_) / resolution_, gy0 = (y0 - y_min_) / resolution_;
   const double length = length_m / resolution_;
-  const int cols = clearance_cells_.cols, rows = clearance_cells_.rows;
-  const float* clearance_at = clearance_cells_.ptr<float>(0);
-  for (double t = 0.0; t < length;) {
-    const double gx = gx0 + t * cos_a, gy = gy0 + t * sin_a;
-    if (gx < 0.0 || gy < 0.0) return false;
-    const int cx = static_cast<int>(gx), cy = static_cast<int>(gy);
-    if (cx >= cols || cy >= rows) return false;
-    const double clearance = clearance_at[static_cast<size_t>(cy) * cols + cx];
-    if (clearance <= 0.0) return true;
-    t += std::max(clearance - kStepSafetyCells, kMinStepCells);
+  const ClearanceField field{clearance_cells_.ptr<float>(0), clearance_cells_.cols, clearance_cells_.rows};
+  double t = 0.0;
+  RayStep step;
+  while ((step = marchStep(field, gx0, gy0, cos_a, sin_a, length, t)) == RayStep::kGoesOn) {
   }
-  return false;
+  return step == RayStep::kCrossed;
 }
 
 int SeeThroughPenalty::countCrossing(const Scan& scan, const mrpt::poses::CPose2D& sensor, int enough) const {
-  // The same expressions as crossesObstacle, so that each ray takes bit for bit the same steps.
+  // The same expressions as crossesObstacle, so that each ray starts from the same numbers.
   const double gx0 = (sensor.x() - x_min_) / resolution_, gy0 = (sensor.y() - y_min_) / resolution_;
   const double cs = std::cos(sensor.phi()), sn = std::sin(sensor.phi());
-  const int cols = clearance_cells_.cols, rows = clearance_cells_.rows;
-  const float* clearance_at = clearance_cells_.ptr<float>(0);
+  const ClearanceField field{clearance_cells_.ptr<float>(0), clearance_cells_.cols, clearance_cells_.rows};
   const size_t n = scan.order_.size();
   struct Lane {
     double t, c, s, length;
@@ -92,33 +109,15 @@ int SeeThroughPenalty::countCrossing(const Scan& scan, const mrpt::poses::CPose2
   while (active < kLanes && next < n) load(lanes[active++]);
   while (active > 0) {
     if (found >= enough) return enough;
-    for (int k = 0; k < active;) {
+    for (int k = 0; k < active; ++k) {
       Lane& lane = lanes[k];
-      bool ended = true, crossed = false;
-      if (lane.t < lane.length) {
-        const double gx = gx0 + lane.t * lane.c, gy = gy0 + lane.t * lane.s;
-        if (gx >= 0.0 && gy >= 0.0) {
-          const int cx = static_cast<int>(gx), cy = static_cast<int>(gy);
-          if (cx < cols && cy < rows) {
-            const double clearance = clearance_at[static_cast<size_t>(cy) * cols + cx];
-            crossed = clearance <= 0.0;
-            if (!crossed) {
-              lane.t += std::max(clearance - kStepSafetyCells, kMinStepCells);
-              ended = false;
-            }
-          }
-        }
-      }
-      if (!ended) {
-        ++k;
-        continue;
-      }
-      found += crossed ? 1 : 0;
+      const RayStep step = marchStep(field, gx0, gy0, lane.c, lane.s, lane.length, lane.t);
+      if (step == RayStep::kGoesOn) continue;
+      found += step == RayStep::kCrossed ? 1 : 0;
       if (next < n)
         load(lane);  // the new ray takes its first step in the next round
       else
-        lanes[k] = lanes[--active];
-      ++k;
+        lanes[k] = lanes[--active];  // the lane moved here steps in the next round
     }
   }
   return std::min(found, enough);
