@@ -16,6 +16,19 @@ float roundedUp(double sum) {
   if (static_cast<double>(f) < sum) f = std::nextafter(f, std::numeric_limits<float>::infinity());
   return f;
 }
+
+/// A node's four running sums added up, always in this order, so that a bound read by one path
+/// or another comes out the same to the last bit.
+double total(const double (&part)[4]) { return (part[0] + part[1]) + (part[2] + part[3]); }
+
+/// The end of a gather whose returns sum to `sum`: the node's tail sums, where it keeps them
+/// (each checkpoint's sum of the returns after it), and its bound.
+template <typename Lane>
+double finishGather(Lane& lane, double sum, size_t returns, size_t checks) {
+  if (lane.tail_out)
+    for (size_t c = 0; c < checks; ++c) lane.tail_out[c] = roundedUp(sum - lane.read_by[c]);
+  return sum / static_cast<double>(returns);
+}
 }  // namespace
 
 bool CorrelativeMatcher::gathersInside(const Rotation& r, int cx, int cy, int level) const {
@@ -69,7 +82,7 @@ double CorrelativeMatcher::gatherFrom(const Rotation& r, BoundLane& lane, size_t
     for (; k < checks; ++k) {
       for (const size_t end = i + kCutoffCheckEvery; i < end; i += 4)
         for (size_t j = 0; j < 4; ++j) part[j] += cell[r.linear[i + j]];
-      lane.read_by[k] = (part[0] + part[1]) + (part[2] + part[3]);
+      lane.read_by[k] = total(part);
       const double unread = parent_tail ? static_cast<double>(parent_tail[k]) : static_cast<double>(n - i);
       if (stop && lane.read_by[k] + unread < needed) {
         ++nodes_stopped_early_;
@@ -80,10 +93,7 @@ double CorrelativeMatcher::gatherFrom(const Rotation& r, BoundLane& lane, size_t
   for (; i < whole; i += 4)
     for (size_t j = 0; j < 4; ++j) part[j] += cell[r.linear[i + j]];
   for (; i < n; ++i) part[0] += cell[r.linear[i]];
-  const double sum = (part[0] + part[1]) + (part[2] + part[3]);
-  if (lane.tail_out)
-    for (size_t c = 0; c < checks; ++c) lane.tail_out[c] = roundedUp(sum - lane.read_by[c]);
-  return sum / static_cast<double>(n);
+  return finishGather(lane, total(part), n, checks);
 }
 
 void CorrelativeMatcher::boundPair(const Rotation& r, BoundLane (&lanes)[2], double cutoff, const float* parent_tail,
@@ -106,8 +116,7 @@ void CorrelativeMatcher::boundPair(const Rotation& r, BoundLane (&lanes)[2], dou
           a_part[j] += a_cell[offset];
           b_part[j] += b_cell[offset];
         }
-      const double a_read = (a_part[0] + a_part[1]) + (a_part[2] + a_part[3]);
-      const double b_read = (b_part[0] + b_part[1]) + (b_part[2] + b_part[3]);
+      const double a_read = total(a_part), b_read = total(b_part);
       lanes[0].read_by[k] = a_read;
       lanes[1].read_by[k] = b_read;
       const double unread = parent_tail ? static_cast<double>(parent_tail[k]) : static_cast<double>(n - i);
@@ -138,15 +147,8 @@ void CorrelativeMatcher::boundPair(const Rotation& r, BoundLane (&lanes)[2], dou
     a_part[0] += a_cell[r.linear[i]];
     b_part[0] += b_cell[r.linear[i]];
   }
-  const double sums[2] = {(a_part[0] + a_part[1]) + (a_part[2] + a_part[3]),
-                          (b_part[0] + b_part[1]) + (b_part[2] + b_part[3])};
-  for (int lane = 0; lane < 2; ++lane) {
-    BoundLane& l = lanes[lane];
-    const double sum = sums[lane];
-    if (l.tail_out)
-      for (size_t c = 0; c < checks; ++c) l.tail_out[c] = roundedUp(sum - l.read_by[c]);
-    out[lane] = sum / static_cast<double>(n);
-  }
+  out[0] = finishGather(lanes[0], total(a_part), n, checks);
+  out[1] = finishGather(lanes[1], total(b_part), n, checks);
 }
 
 void CorrelativeMatcher::boundNodes(const Rotation& r, Node* nodes, size_t count, double cutoff,
