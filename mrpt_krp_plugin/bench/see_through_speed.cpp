@@ -10,18 +10,15 @@
 #include <vector>
 
 #include "mrpt_krp_plugin/common/random.h"
+#include "mrpt_krp_plugin/common/statistics.h"
 #include "mrpt_krp_plugin/common/thread_cpu_time.h"
 #include "mrpt_krp_plugin/filter/see_through.h"
 
 namespace krp {
 namespace {
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+// The particle cloud's draws, a stream of the trial seed apart from the trial's own.
+constexpr uint64_t kCloudStream = 0x636c6f7564ull;  // "cloud"
 
 // The fastest of `repeats` charges of the whole cloud by `count` [s], and the counts.
 template <typename Count>
@@ -55,7 +52,7 @@ SeeThroughSpeed measureSeeThroughSpeed(const mrpt::maps::COccupancyGridMap2D& ma
     const auto trial = generateTrial(map, lidar, trial_params, seed);
     const auto scan = penalty.forScan(*trial.scans.front());
     const auto& truth = trial.truth.front();
-    Rng rng(seed ^ 0x5ee7a7u);
+    Rng rng(deriveSeed(seed, kCloudStream));
     std::vector<mrpt::math::TPose2D> cloud(static_cast<size_t>(params.particles));
     for (auto& p : cloud)
       p = {rng.normal(truth.x, params.spread_m), rng.normal(truth.y, params.spread_m),
