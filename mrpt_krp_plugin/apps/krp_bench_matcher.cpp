@@ -59,7 +59,7 @@ static int run(int argc, char** argv) {
     const auto world = krp::readWorld(krp::apps::worldFilePath(args.get("world"), args.get("world-dir")));
     map_path = world.map_path;
     lidar_name = args.has("lidar") ? args.get("lidar") : world.default_lidar_profile;
-    lidar = krp::isLidarProfileFile(lidar_name) ? krp::lidarProfile(lidar_name) : world.lidar(lidar_name);
+    lidar = world.lidarOrProfileFile(lidar_name);
     params.trial.clutter = world.clutter;
   }
   const auto map = krp::loadOccupancyMap(map_path);

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // krp-bench-see-through: the filter's see-through charge of a particle cloud with the rays
 // marched side by side against one at a time, on the same simulated scans and particles.
-#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -14,7 +13,6 @@
 #include "mrpt_krp_plugin/common/progress_bar.h"
 #include "mrpt_krp_plugin/map/map_loader.h"
 #include "mrpt_krp_plugin/map/occupancy_map.h"
-#include "mrpt_krp_plugin/sim/lidar_profile_file.h"
 #include "mrpt_krp_plugin/sim/world.h"
 
 using krp::apps::CliArgs;
@@ -54,7 +52,7 @@ static int run(int argc, char** argv) {
   if (!(params.spread_deg >= 0)) throw krp::InputError("--spread-deg", "must be >= 0");
   const auto world = krp::readWorld(krp::apps::worldFilePath(args.get("world"), args.get("world-dir")));
   const std::string lidar_name = args.has("lidar") ? args.get("lidar") : world.default_lidar_profile;
-  const auto lidar = krp::isLidarProfileFile(lidar_name) ? krp::lidarProfile(lidar_name) : world.lidar(lidar_name);
+  const auto lidar = world.lidarOrProfileFile(lidar_name);
   params.trial.clutter = world.clutter;
   const auto map = krp::loadOccupancyMap(world.map_path);
   krp::ProgressBar bar("scans", static_cast<std::size_t>(params.scans), std::cerr);

@@ -48,6 +48,10 @@ LidarProfile World::lidar(const std::string& profile_name) const {
   return p;
 }
 
+LidarProfile World::lidarOrProfileFile(const std::string& name_or_file) const {
+  return isLidarProfileFile(name_or_file) ? lidarProfile(name_or_file) : lidar(name_or_file);
+}
+
 namespace {
 World interpretWorld(const YAML::Node& root, const std::string& path) {
   if (!root.IsMap()) throw InputError(path, "expected a YAML mapping");

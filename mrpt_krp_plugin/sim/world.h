@@ -35,6 +35,9 @@ struct World {
 
   /// A profile of this world with the world's overrides applied; InputError if not listed.
   LidarProfile lidar(const std::string& profile_name) const;
+  /// A user's profile file as it is (listed or not: their own scanner in this world), else the
+  /// listed profile of that name, as lidar() gives it.
+  LidarProfile lidarOrProfileFile(const std::string& name_or_file) const;
 };
 
 /// Reads a world file; InputError for unknown keys, bad values, unknown profiles.
