@@ -9,21 +9,15 @@ loss_sigma.json and LOSS_SIGMA.md into --out.
 """
 import argparse
 import json
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
-from . import export, keypoint_error, train_keypoints
+from . import keypoint_error, keypoint_trials, train_keypoints
 from .augment import max_rotation_deg
 from .command_line import invocation, quoted
+from .keypoint_trials import EVAL_SPLITS
 from .train_map import DEFAULT_BIN_DIR, KEYPOINT_TRAIN_IMAGES, REPO_ROOT
-
-EVAL_SPLITS = ("test", "changed")
-
-
-def _f(x, digits=3):
-    return "n/a" if x is None else f"{x:.{digits}f}"
 
 
 def parse_schedule(text: str) -> dict:
@@ -43,22 +37,17 @@ def parse_schedule(text: str) -> dict:
 
 
 def markdown(result: dict) -> str:
+    header = f"| training sigma | split | {keypoint_trials.METRIC_HEADER} | train s |"
     lines = [f"# Keypoint loss sigma: {result['world']}", "", f"Command: `{result['command']}`", "",
              f"Dataset: `{result['dataset_command']}`; {result['train_images']} training images, "
              f"{result['epochs']} epochs, seed {result['seed']} for every run. pose mAP is ultralytics' "
              "(its own sigma for every run); errors are of keypoints labelled observed, on images whose top "
              f"detection names the right zone; a landmark is not learned when its median error is over "
              f"{keypoint_error.UNLEARNED_MEDIAN_M:g} m.", "",
-             "| training sigma | split | box mAP50 | pose mAP50 | pose mAP50-95 | mean kpt error | median | "
-             "right-zone images | landmarks not learned | train s |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             header, keypoint_trials.rule_under(header)]
     for r in result["runs"]:
         for s in EVAL_SPLITS:
-            m, e = r[s], r[s]["keypoint_error"]
-            names = ", ".join(e["unlearned_landmarks"]) or "none"
-            lines.append(f"| {train_keypoints.sigma_schedule_name(r)} | {s} | {_f(m['box']['map50'])} | {_f(m['pose']['map50'])} | "
-                         f"{_f(m['pose']['map50_95'])} | {_f(e['mean_error_m'])} m | {_f(e['median_error_m'])} m | "
-                         f"{e['right_zone']} of {e['images']} | {len(e['unlearned_landmarks'])}: {names} | "
+            lines.append(f"| {train_keypoints.sigma_schedule_name(r)} | {s} | {keypoint_trials.metric_cells(r[s])} | "
                          f"{r['seconds']:.0f} |")
     return "\n".join(lines) + "\n"
 
@@ -91,30 +80,16 @@ def main(argv=None) -> int:
     command = invocation("python -m krp_training.compare_loss_sigma", argv)
     with tempfile.TemporaryDirectory() as tmp:
         dataset = Path(tmp) / "dataset"
-        ds_cmd = [str(args.bin_dir / "krp-dataset"), "--world", args.world, "--world-dir", str(REPO_ROOT / "sim_worlds"),
-                  "--out", str(dataset), "--samples-per-zone", str(args.samples_per_zone), "--changed-per-zone",
-                  str(args.changed_per_zone), "--seed", str(args.seed)]
-        subprocess.run(ds_cmd, check=True, stdout=subprocess.DEVNULL)
-        card = json.loads((dataset / "dataset_card.json").read_text())
-        img_px, res_m = int(card["submap"]["size_px"]), float(card["submap"]["resolution_m"])
-        k = int(card["landmarks"]["keypoints_per_zone"])
+        card, ds_cmd = keypoint_trials.make_dataset(args.bin_dir, args.world, REPO_ROOT / "sim_worlds", dataset,
+                                                    args.samples_per_zone, args.changed_per_zone, args.seed)
         runs = []
         for number, schedule in enumerate(args.sigmas):
-            work = Path(tmp) / f"run_{number}"
-            work.mkdir()
-            data_yaml, n_train = train_keypoints.limit_training_images(dataset / "keypoints" / "data.yaml", work,
-                                                                       args.keypoint_train_images, args.seed)
             params = train_keypoints.KeypointParams(epochs=args.epochs, seed=args.seed,
                                                     rotation_deg=max_rotation_deg(card), **schedule)
-            trained = train_keypoints.train(data_yaml, work, params, img_px)
-            onnx = work / "keypoints.onnx"
-            export.export_keypoints(trained.weights, img_px, onnx, work)
-            run = {**schedule, "seconds": trained.seconds, "params": trained.params}
-            for s in EVAL_SPLITS:
-                run[s] = train_keypoints.evaluate(onnx, dataset / "keypoints", s, img_px, work)
-                run[s]["keypoint_error"] = keypoint_error.mean_keypoint_error(onnx, dataset, s, img_px, res_m, k, work,
-                                                                              zone_names=card["zones"])
-            runs.append(run)
+            run = keypoint_trials.train_and_measure(dataset, card, Path(tmp) / f"run_{number}",
+                                                    args.keypoint_train_images, params)
+            runs.append({**schedule, **run})
+        n_train = runs[0]["train_images"]
     result = {"world": args.world, "command": command, "dataset_command": quoted(["krp-dataset"] + ds_cmd[1:]),
               "train_images": n_train, "epochs": args.epochs, "seed": args.seed, "runs": runs}
     args.out.mkdir(parents=True, exist_ok=True)

@@ -27,8 +27,22 @@ def classifier_curves(history: list, title: str, path: Path) -> None:
     plt.close(fig)
 
 
+VAL_LOSS_KEYS = ("val/box_loss", "val/pose_loss")
+
+
+def validated_rows(rows: list) -> list:
+    """The rows of epochs that were validated. Without validation each epoch (krp-train-map's
+    default: KeypointParams.validate_each_epoch), ultralytics writes zeros into an epoch's val
+    columns; a measured loss is never exactly 0, so a row with every val loss 0 was not measured."""
+    keys = [k for k in VAL_LOSS_KEYS if k in (rows[0] if rows else {})]
+    if not keys:
+        return rows
+    return [r for r in rows if any(float(r[k]) != 0.0 for k in keys)]
+
+
 def keypoint_curves(results_csv: Path, title: str, path: Path) -> None:
-    """ultralytics' results.csv: losses and pose mAP per epoch."""
+    """ultralytics' results.csv: losses per epoch, and the val losses and pose mAP at the epochs
+    that were validated (drawn as points, so a lone final validation shows as one)."""
     import csv
 
     rows = list(csv.DictReader(open(results_csv)))
@@ -36,19 +50,28 @@ def keypoint_curves(results_csv: Path, title: str, path: Path) -> None:
         return
     rows = [{k.strip(): v for k, v in r.items()} for r in rows]
     epochs = [int(float(r["epoch"])) for r in rows]
+    measured = validated_rows(rows)
+    measured_epochs = [int(float(r["epoch"])) for r in measured]
     fig, (ax_loss, ax_map) = plt.subplots(1, 2, figsize=(9, 3.5))
-    for key in ("train/box_loss", "train/pose_loss", "val/box_loss", "val/pose_loss"):
+    for key in ("train/box_loss", "train/pose_loss"):
         if key in rows[0]:
             ax_loss.plot(epochs, [float(r[key]) for r in rows], label=key)
+    for key in VAL_LOSS_KEYS:
+        if key in rows[0]:
+            ax_loss.plot(measured_epochs, [float(r[key]) for r in measured], marker="o", label=key)
     ax_loss.set_xlabel("epoch")
     ax_loss.set_ylabel("loss")
     ax_loss.legend(fontsize=7)
     for key in ("metrics/mAP50(P)", "metrics/mAP50-95(P)", "metrics/mAP50(B)"):
         if key in rows[0]:
-            ax_map.plot(epochs, [float(r[key]) for r in rows], label=key.replace("metrics/", "val "))
+            ax_map.plot(measured_epochs, [float(r[key]) for r in measured], marker="o",
+                        label=key.replace("metrics/", "val "))
     ax_map.set_xlabel("epoch")
+    ax_map.set_xlim(ax_loss.get_xlim())
     ax_map.set_ylim(0, 1.02)
     ax_map.legend(fontsize=7)
+    if len(measured) < len(rows):
+        ax_map.set_title(f"validated at {len(measured)} of {len(rows)} epochs", fontsize=8)
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(path, dpi=110)

@@ -1,0 +1,38 @@
+"""compare_keypoint_budget: runs named as images x epochs, and its table."""
+import pytest
+
+
+def _split(mean):
+    return {"box": {"map50": 0.9}, "pose": {"map50": 0.8, "map50_95": 0.6},
+            "keypoint_error": {"mean_error_m": mean, "median_error_m": 0.3, "right_zone": 90, "images": 100,
+                               "unlearned_landmarks": []}}
+
+
+@pytest.mark.parametrize("text, budget", [("600x40", (600, 40)), ("2400X10", (2400, 10))])
+def test_a_run_is_images_by_epochs(text, budget):
+    from krp_training.compare_keypoint_budget import parse_budget
+
+    b = parse_budget(text)
+    assert (b["train_images"], b["epochs"]) == budget
+
+
+@pytest.mark.parametrize("budgets", ["600", "600x40x2", "0x40", "600x0", "ax40", "600x40,"])
+def test_the_comparison_refuses_a_run_it_cannot_train(budgets, capsys):
+    from krp_training.compare_keypoint_budget import parse_args
+
+    with pytest.raises(SystemExit):
+        parse_args(["--world", "w", "--out", "o", "--budgets", budgets])
+    assert "--budgets" in capsys.readouterr().err
+
+
+def test_the_table_gives_each_runs_image_passes_and_metrics():
+    from krp_training.compare_keypoint_budget import markdown
+
+    runs = [{"train_images": 600, "epochs": 40, "seconds": 372.4, "test": _split(0.61), "changed": _split(1.1)},
+            {"train_images": 1200, "epochs": 20, "seconds": 380.0, "test": _split(0.5), "changed": _split(0.9)}]
+    text = markdown({"world": "w", "command": "python -m krp_training.compare_keypoint_budget --world w",
+                     "dataset_command": "krp-dataset --world w", "seed": 1, "runs": runs})
+    assert "| 600 | 40 | 24,000 | test | 0.900 | 0.800 | 0.600 | 0.610 m | 0.300 m | 90 of 100 | 0: none | 372 |" in text
+    assert "| 1200 | 20 | 24,000 | changed | 0.900 | 0.800 | 0.600 | 0.900 m |" in text
+    header, rule = [line for line in text.splitlines() if line.startswith("| training images") or line.startswith("|---")]
+    assert header.count("|") == rule.count("|")
