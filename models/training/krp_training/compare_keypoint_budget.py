@@ -46,7 +46,30 @@ def markdown(result: dict) -> str:
         for s in EVAL_SPLITS:
             lines.append(f"| {r['train_images']} | {r['epochs']} | {r['train_images'] * r['epochs']:,} | {s} | "
                          f"{keypoint_trials.metric_cells(r[s])} | {r['seconds']:.0f} |")
+    lines += ["", *_landmark_comparison(result["runs"])]
     return "\n".join(lines) + "\n"
+
+
+def _landmark_medians(run: dict, split: str) -> dict:
+    return {(r["zone"], r["keypoint"]): r["median_m"] for r in run[split]["keypoint_error"]["per_landmark"]}
+
+
+def _landmark_comparison(runs: list) -> list:
+    """Each run's landmarks against the first run's, landmark by landmark. A run that names the zone
+    right on more images is measured on harder ones too, so its mean error may rise without any
+    landmark being placed worse; a landmark's median over its own observations says whether it is."""
+    if len(runs) < 2:
+        return []
+    lines = [f"Landmark by landmark against the first run ({runs[0]['train_images']} x {runs[0]['epochs']}): how many "
+             "landmarks' median error of observed keypoints is higher, of those both runs measured."]
+    for split in EVAL_SPLITS:
+        first = _landmark_medians(runs[0], split)
+        for r in runs[1:]:
+            other = _landmark_medians(r, split)
+            both = [k for k in first if k in other]
+            higher = sum(other[k] > first[k] for k in both)
+            lines.append(f"- {split}, {r['train_images']} x {r['epochs']}: {higher} of {len(both)} higher")
+    return lines
 
 
 def parse_args(argv):

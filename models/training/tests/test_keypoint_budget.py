@@ -2,10 +2,12 @@
 import pytest
 
 
-def _split(mean):
+def _split(mean, landmark_medians=(0.2, 0.3)):
     return {"box": {"map50": 0.9}, "pose": {"map50": 0.8, "map50_95": 0.6},
             "keypoint_error": {"mean_error_m": mean, "median_error_m": 0.3, "right_zone": 90, "images": 100,
-                               "unlearned_landmarks": []}}
+                               "unlearned_landmarks": [],
+                               "per_landmark": [{"zone": "a", "keypoint": k, "median_m": m}
+                                                for k, m in enumerate(landmark_medians)]}}
 
 
 @pytest.mark.parametrize("text, budget", [("600x40", (600, 40)), ("2400X10", (2400, 10))])
@@ -36,3 +38,15 @@ def test_the_table_gives_each_runs_image_passes_and_metrics():
     assert "| 1200 | 20 | 24,000 | changed | 0.900 | 0.800 | 0.600 | 0.900 m |" in text
     header, rule = [line for line in text.splitlines() if line.startswith("| training images") or line.startswith("|---")]
     assert header.count("|") == rule.count("|")
+
+
+def test_each_run_is_compared_landmark_by_landmark_with_the_first():
+    from krp_training.compare_keypoint_budget import markdown
+
+    runs = [{"train_images": 600, "epochs": 40, "seconds": 1.0, "test": _split(0.6, (0.2, 0.3, 0.4)),
+             "changed": _split(1.0, (0.5, 0.5))},
+            {"train_images": 2400, "epochs": 10, "seconds": 1.0, "test": _split(0.7, (0.25, 0.3, 0.5)),
+             "changed": _split(0.9, (0.4,))}]
+    text = markdown({"world": "w", "command": "c", "dataset_command": "d", "seed": 1, "runs": runs})
+    assert "- test, 2400 x 10: 2 of 3 higher" in text  # equal is not higher
+    assert "- changed, 2400 x 10: 0 of 1 higher" in text  # only landmarks both runs measured
