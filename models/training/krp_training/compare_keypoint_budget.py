@@ -8,7 +8,6 @@ the same training split) and of epochs differ. Each exported model is measured a
 measures it. Writes keypoint_budget.json and KEYPOINT_BUDGET.md into --out.
 """
 import argparse
-import json
 import sys
 import tempfile
 from pathlib import Path
@@ -93,11 +92,13 @@ def parse_args(argv):
 def main(argv=None) -> int:
     args = parse_args(argv)
     command = invocation("python -m krp_training.compare_keypoint_budget", argv)
+    runs = []
+    result = {"world": args.world, "command": command, "seed": args.seed, "runs": runs}
     with tempfile.TemporaryDirectory() as tmp:
         dataset = Path(tmp) / "dataset"
         card, ds_cmd = keypoint_trials.make_dataset(args.bin_dir, args.world, REPO_ROOT / "sim_worlds", dataset,
                                                     args.samples_per_zone, args.changed_per_zone, args.seed)
-        runs = []
+        result["dataset_command"] = quoted(["krp-dataset"] + ds_cmd[1:])
         for number, budget in enumerate(args.budgets):
             params = train_keypoints.KeypointParams(epochs=budget["epochs"], seed=args.seed,
                                                     rotation_deg=max_rotation_deg(card))
@@ -107,11 +108,7 @@ def main(argv=None) -> int:
                 print(f"compare_keypoint_budget: the training split holds {run['train_images']} images, fewer than "
                       f"the {budget['train_images']} asked for; that run trained on all of them", file=sys.stderr)
             runs.append({**run, "epochs": budget["epochs"], "asked_train_images": budget["train_images"]})
-    result = {"world": args.world, "command": command, "dataset_command": quoted(["krp-dataset"] + ds_cmd[1:]),
-              "seed": args.seed, "runs": runs}
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / "keypoint_budget.json").write_text(json.dumps(result, indent=1))
-    (args.out / "KEYPOINT_BUDGET.md").write_text(markdown(result))
+            keypoint_trials.write_results(args.out, "keypoint_budget.json", "KEYPOINT_BUDGET.md", result, markdown)
     print(f"compare_keypoint_budget: {args.out / 'KEYPOINT_BUDGET.md'}")
     return 0
 

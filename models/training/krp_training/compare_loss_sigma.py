@@ -8,7 +8,6 @@ sigma, whatever the training sigma) and the error of observed keypoints, per lan
 loss_sigma.json and LOSS_SIGMA.md into --out.
 """
 import argparse
-import json
 import sys
 import tempfile
 from pathlib import Path
@@ -78,23 +77,21 @@ def parse_args(argv):
 def main(argv=None) -> int:
     args = parse_args(argv)
     command = invocation("python -m krp_training.compare_loss_sigma", argv)
+    runs = []
+    result = {"world": args.world, "command": command, "epochs": args.epochs, "seed": args.seed, "runs": runs}
     with tempfile.TemporaryDirectory() as tmp:
         dataset = Path(tmp) / "dataset"
         card, ds_cmd = keypoint_trials.make_dataset(args.bin_dir, args.world, REPO_ROOT / "sim_worlds", dataset,
                                                     args.samples_per_zone, args.changed_per_zone, args.seed)
-        runs = []
+        result["dataset_command"] = quoted(["krp-dataset"] + ds_cmd[1:])
         for number, schedule in enumerate(args.sigmas):
             params = train_keypoints.KeypointParams(epochs=args.epochs, seed=args.seed,
                                                     rotation_deg=max_rotation_deg(card), **schedule)
             run = keypoint_trials.train_and_measure(dataset, card, Path(tmp) / f"run_{number}",
                                                     args.keypoint_train_images, params)
             runs.append({**schedule, **run})
-        n_train = runs[0]["train_images"]
-    result = {"world": args.world, "command": command, "dataset_command": quoted(["krp-dataset"] + ds_cmd[1:]),
-              "train_images": n_train, "epochs": args.epochs, "seed": args.seed, "runs": runs}
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / "loss_sigma.json").write_text(json.dumps(result, indent=1))
-    (args.out / "LOSS_SIGMA.md").write_text(markdown(result))
+            result["train_images"] = runs[0]["train_images"]
+            keypoint_trials.write_results(args.out, "loss_sigma.json", "LOSS_SIGMA.md", result, markdown)
     print(f"compare_loss_sigma: {args.out / 'LOSS_SIGMA.md'}")
     return 0
 

@@ -44,6 +44,14 @@ def train_and_measure(dataset: Path, card: dict, work: Path, train_images: int,
     return run
 
 
+def write_results(out: Path, json_name: str, markdown_name: str, result: dict, markdown) -> None:
+    """Writes the result so far: called after every run, so that hours of training are not lost to
+    a failure or an interrupt in a later run (a partial file lists the runs that finished)."""
+    out.mkdir(parents=True, exist_ok=True)
+    (out / json_name).write_text(json.dumps(result, indent=1))
+    (out / markdown_name).write_text(markdown(result))
+
+
 def fmt(x, digits=3) -> str:
     return "n/a" if x is None else f"{x:.{digits}f}"
 

@@ -50,3 +50,30 @@ def test_each_run_is_compared_landmark_by_landmark_with_the_first():
     text = markdown({"world": "w", "command": "c", "dataset_command": "d", "seed": 1, "runs": runs})
     assert "- test, 2400 x 10: 2 of 3 higher" in text  # equal is not higher
     assert "- changed, 2400 x 10: 0 of 1 higher" in text  # only landmarks both runs measured
+
+
+def test_a_run_that_fails_keeps_the_runs_before_it(tmp_path, monkeypatch):
+    """Hours of training are not lost to a failure in a later run."""
+    import json
+
+    from krp_training import compare_keypoint_budget, keypoint_trials
+
+    monkeypatch.setattr(keypoint_trials, "make_dataset",
+                        lambda *a, **k: ({"submap": {"rotation": "wall_axes"}}, ["krp-dataset", "--world", "w"]))
+    monkeypatch.setattr(compare_keypoint_budget, "max_rotation_deg", lambda card: 3.0)
+    calls = []
+
+    def train_and_measure(dataset, card, work, train_images, params):
+        calls.append((train_images, params.epochs))
+        if len(calls) == 2:
+            raise RuntimeError("out of memory")
+        return {"train_images": train_images, "seconds": 1.0, "params": {}, "test": _split(0.6),
+                "changed": _split(1.0)}
+
+    monkeypatch.setattr(keypoint_trials, "train_and_measure", train_and_measure)
+    out = tmp_path / "out"
+    with pytest.raises(RuntimeError, match="out of memory"):
+        compare_keypoint_budget.main(["--world", "w", "--out", str(out), "--budgets", "600x40,1200x20"])
+    kept = json.loads((out / "keypoint_budget.json").read_text())
+    assert [(r["train_images"], r["epochs"]) for r in kept["runs"]] == [(600, 40)]
+    assert "| 600 | 40 | 24,000 | test |" in (out / "KEYPOINT_BUDGET.md").read_text()
