@@ -36,6 +36,8 @@ SECONDS_PER_IMAGE_EPOCH = {"compact": 0.0013, "yolo": 0.015}
 REFERENCE_PROBE_S = 0.049
 # The keypoint model's training images: 600 x 40 epochs took 6 to 30 min of a 2-core CPU.
 KEYPOINT_TRAIN_IMAGES = 600
+# ultralytics' per-epoch losses and metrics of the keypoint training, copied beside its figure.
+KEYPOINT_RESULTS_CSV = "keypoint_results.csv"
 
 
 # The smallest value each whole-number option takes, checked before any work starts: a bad one
@@ -225,7 +227,9 @@ def main(argv=None) -> int:
     with timer.stage("keypoints", rest["keypoints"] if rest else None):
         kpr = train_keypoints.train(kp_yaml, work, kp, img_px)
     if (kpr.run_dir / "results.csv").exists():
-        plots.keypoint_curves(kpr.run_dir / "results.csv", f"{name}: keypoint model (YOLOv8n-pose)",
+        # Kept beside the figure, so that it can be drawn again without training again.
+        shutil.copyfile(kpr.run_dir / "results.csv", partial / "figures" / KEYPOINT_RESULTS_CSV)
+        plots.keypoint_curves(partial / "figures" / KEYPOINT_RESULTS_CSV, f"{name}: keypoint model (YOLOv8n-pose)",
                               partial / "figures" / "keypoint_curves.png")
 
     with timer.stage("export"):

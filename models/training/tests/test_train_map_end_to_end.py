@@ -37,7 +37,8 @@ def test_tiny_train_and_export(tmp_path, bin_dir):
     y = kp.run(None, {"images": np.zeros((1, 3, 160, 160), np.float32)})[0]
     assert y.shape[:2] == (1, 4 + 2 + 3 * 12)
 
-    for fig in ("classifier_curves.png", "confusion_test.png", "confusion_changed.png"):
+    for fig in ("classifier_curves.png", "confusion_test.png", "confusion_changed.png", "keypoint_curves.png",
+                "keypoint_results.csv"):
         assert (out / "figures" / fig).stat().st_size > 0
     report = (out / "REPORT.md").read_text()
     assert "Zone classifier" in report and "Keypoint model" in report
