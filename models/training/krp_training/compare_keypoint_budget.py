@@ -9,14 +9,12 @@ measures it. Writes keypoint_budget.json and KEYPOINT_BUDGET.md into --out.
 """
 import argparse
 import sys
-import tempfile
 from pathlib import Path
 
 from . import keypoint_error, keypoint_trials, train_keypoints
 from .augment import max_rotation_deg
-from .command_line import invocation, quoted
+from .command_line import invocation
 from .keypoint_trials import EVAL_SPLITS
-from .train_map import DEFAULT_BIN_DIR, REPO_ROOT
 
 
 def parse_budget(text: str) -> dict:
@@ -73,14 +71,10 @@ def _landmark_comparison(runs: list) -> list:
 
 def parse_args(argv):
     p = argparse.ArgumentParser(prog="compare_keypoint_budget", description=__doc__.splitlines()[0])
-    p.add_argument("--world", required=True)
+    keypoint_trials.add_dataset_arguments(p)
     p.add_argument("--out", required=True, type=Path, help="folder for keypoint_budget.json and KEYPOINT_BUDGET.md")
     p.add_argument("--budgets", default="600x40,1200x20,2400x10",
                    help="comma-separated runs, each IMAGESxEPOCHS: that many training images for that many epochs")
-    p.add_argument("--samples-per-zone", type=int, default=4000)
-    p.add_argument("--changed-per-zone", type=int, default=150)
-    p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--bin-dir", type=Path, default=DEFAULT_BIN_DIR)
     args = p.parse_args(argv)
     try:
         args.budgets = [parse_budget(b) for b in args.budgets.split(",")]
@@ -89,26 +83,24 @@ def parse_args(argv):
     return args
 
 
+def _train_run(seed: int):
+    def train_run(budget, dataset, card, work):
+        params = train_keypoints.KeypointParams(epochs=budget["epochs"], seed=seed, rotation_deg=max_rotation_deg(card))
+        run = keypoint_trials.train_and_measure(dataset, card, work, budget["train_images"], params)
+        if run["train_images"] < budget["train_images"]:
+            print(f"compare_keypoint_budget: the training split holds {run['train_images']} images, fewer than "
+                  f"the {budget['train_images']} asked for; that run trained on all of them", file=sys.stderr)
+        return {**run, "epochs": budget["epochs"], "asked_train_images": budget["train_images"]}
+
+    return train_run
+
+
 def main(argv=None) -> int:
     args = parse_args(argv)
-    command = invocation("python -m krp_training.compare_keypoint_budget", argv)
-    runs = []
-    result = {"world": args.world, "command": command, "seed": args.seed, "runs": runs}
-    with tempfile.TemporaryDirectory() as tmp:
-        dataset = Path(tmp) / "dataset"
-        card, ds_cmd = keypoint_trials.make_dataset(args.bin_dir, args.world, REPO_ROOT / "sim_worlds", dataset,
-                                                    args.samples_per_zone, args.changed_per_zone, args.seed)
-        result["dataset_command"] = quoted(["krp-dataset"] + ds_cmd[1:])
-        for number, budget in enumerate(args.budgets):
-            params = train_keypoints.KeypointParams(epochs=budget["epochs"], seed=args.seed,
-                                                    rotation_deg=max_rotation_deg(card))
-            run = keypoint_trials.train_and_measure(dataset, card, Path(tmp) / f"run_{number}",
-                                                    budget["train_images"], params)
-            if run["train_images"] < budget["train_images"]:
-                print(f"compare_keypoint_budget: the training split holds {run['train_images']} images, fewer than "
-                      f"the {budget['train_images']} asked for; that run trained on all of them", file=sys.stderr)
-            runs.append({**run, "epochs": budget["epochs"], "asked_train_images": budget["train_images"]})
-            keypoint_trials.write_results(args.out, "keypoint_budget.json", "KEYPOINT_BUDGET.md", result, markdown)
+    result = {"world": args.world, "command": invocation("python -m krp_training.compare_keypoint_budget", argv),
+              "seed": args.seed}
+    keypoint_trials.run_comparison(args, result, args.budgets, _train_run(args.seed), "keypoint_budget.json",
+                                   "KEYPOINT_BUDGET.md", markdown)
     print(f"compare_keypoint_budget: {args.out / 'KEYPOINT_BUDGET.md'}")
     return 0
 

@@ -9,14 +9,13 @@ loss_sigma.json and LOSS_SIGMA.md into --out.
 """
 import argparse
 import sys
-import tempfile
 from pathlib import Path
 
 from . import keypoint_error, keypoint_trials, train_keypoints
 from .augment import max_rotation_deg
-from .command_line import invocation, quoted
+from .command_line import invocation
 from .keypoint_trials import EVAL_SPLITS
-from .train_map import DEFAULT_BIN_DIR, KEYPOINT_TRAIN_IMAGES, REPO_ROOT
+from .train_map import KEYPOINT_TRAIN_IMAGES
 
 
 def parse_schedule(text: str) -> dict:
@@ -53,17 +52,13 @@ def markdown(result: dict) -> str:
 
 def parse_args(argv):
     p = argparse.ArgumentParser(prog="compare_loss_sigma", description=__doc__.splitlines()[0])
-    p.add_argument("--world", required=True)
+    keypoint_trials.add_dataset_arguments(p)
     p.add_argument("--out", required=True, type=Path, help="folder for loss_sigma.json and LOSS_SIGMA.md")
     p.add_argument("--sigmas", default="0,0.25",
                    help="comma-separated runs, each an OKS sigma S (0 = ultralytics' 1/K) or S:F:N, sigma S "
                         "and then F for the last N epochs")
-    p.add_argument("--samples-per-zone", type=int, default=4000)
-    p.add_argument("--changed-per-zone", type=int, default=150)
     p.add_argument("--keypoint-train-images", type=int, default=KEYPOINT_TRAIN_IMAGES)
     p.add_argument("--epochs", type=int, default=40)
-    p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--bin-dir", type=Path, default=DEFAULT_BIN_DIR)
     args = p.parse_args(argv)
     try:
         args.sigmas = [parse_schedule(s) for s in args.sigmas.split(",")]
@@ -76,22 +71,17 @@ def parse_args(argv):
 
 def main(argv=None) -> int:
     args = parse_args(argv)
-    command = invocation("python -m krp_training.compare_loss_sigma", argv)
-    runs = []
-    result = {"world": args.world, "command": command, "epochs": args.epochs, "seed": args.seed, "runs": runs}
-    with tempfile.TemporaryDirectory() as tmp:
-        dataset = Path(tmp) / "dataset"
-        card, ds_cmd = keypoint_trials.make_dataset(args.bin_dir, args.world, REPO_ROOT / "sim_worlds", dataset,
-                                                    args.samples_per_zone, args.changed_per_zone, args.seed)
-        result["dataset_command"] = quoted(["krp-dataset"] + ds_cmd[1:])
-        for number, schedule in enumerate(args.sigmas):
-            params = train_keypoints.KeypointParams(epochs=args.epochs, seed=args.seed,
-                                                    rotation_deg=max_rotation_deg(card), **schedule)
-            run = keypoint_trials.train_and_measure(dataset, card, Path(tmp) / f"run_{number}",
-                                                    args.keypoint_train_images, params)
-            runs.append({**schedule, **run})
-            result["train_images"] = runs[0]["train_images"]
-            keypoint_trials.write_results(args.out, "loss_sigma.json", "LOSS_SIGMA.md", result, markdown)
+    result = {"world": args.world, "command": invocation("python -m krp_training.compare_loss_sigma", argv),
+              "epochs": args.epochs, "seed": args.seed}
+
+    def train_run(schedule, dataset, card, work):
+        params = train_keypoints.KeypointParams(epochs=args.epochs, seed=args.seed,
+                                                rotation_deg=max_rotation_deg(card), **schedule)
+        run = {**schedule, **keypoint_trials.train_and_measure(dataset, card, work, args.keypoint_train_images, params)}
+        result["train_images"] = run["train_images"]  # every run draws the same images
+        return run
+
+    keypoint_trials.run_comparison(args, result, args.sigmas, train_run, "loss_sigma.json", "LOSS_SIGMA.md", markdown)
     print(f"compare_loss_sigma: {args.out / 'LOSS_SIGMA.md'}")
     return 0
 

@@ -6,11 +6,39 @@ output and seed, and is scored by ultralytics' validator and by the error of obs
 """
 import json
 import subprocess
+import tempfile
 from pathlib import Path
 
 from . import export, keypoint_error, train_keypoints
+from .command_line import quoted
+from .train_map import DEFAULT_BIN_DIR, REPO_ROOT
 
 EVAL_SPLITS = ("test", "changed")
+
+
+def add_dataset_arguments(p) -> None:
+    """The arguments every keypoint comparison takes: the world, its one dataset, the seed and where
+    the C++ apps are."""
+    p.add_argument("--world", required=True)
+    p.add_argument("--samples-per-zone", type=int, default=4000)
+    p.add_argument("--changed-per-zone", type=int, default=150)
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--bin-dir", type=Path, default=DEFAULT_BIN_DIR)
+
+
+def run_comparison(args, result: dict, plans: list, train_run, json_name: str, markdown_name: str, markdown) -> None:
+    """Makes the comparison's one dataset (add_dataset_arguments' args), then each plan's run:
+    `train_run(plan, dataset, card, work)` returns the run's dict, appended to result["runs"] and
+    written out (write_results) before the next run starts."""
+    with tempfile.TemporaryDirectory() as tmp:
+        dataset = Path(tmp) / "dataset"
+        card, command = make_dataset(args.bin_dir, args.world, REPO_ROOT / "sim_worlds", dataset,
+                                     args.samples_per_zone, args.changed_per_zone, args.seed)
+        result["dataset_command"] = quoted(["krp-dataset"] + command[1:])
+        result["runs"] = []
+        for number, plan in enumerate(plans):
+            result["runs"].append(train_run(plan, dataset, card, Path(tmp) / f"run_{number}"))
+            write_results(args.out, json_name, markdown_name, result, markdown)
 
 
 def make_dataset(bin_dir: Path, world: str, world_dir: Path, out: Path, samples_per_zone: int,
